@@ -1,0 +1,43 @@
+# The two commands a fresh machine needs: `make book` and `make test`.
+# Both create .venv and install the pinned dependencies first (`make setup`).
+PY      := .venv/bin/python
+PIP     := .venv/bin/pip
+STAMP   := .venv/.installed
+export LABKIT_TIME ?= virtual
+
+.PHONY: setup test unit nbval browser book book-exec lab bench clean
+
+setup: $(STAMP)
+
+$(STAMP): requirements.lock pyproject.toml
+	test -x $(PY) || python3 -m venv .venv
+	$(PIP) install -q --upgrade pip
+	$(PIP) install -q -r requirements.lock
+	$(PIP) install -q --no-deps -e .
+	touch $(STAMP)
+
+# Whole suite: labkit unit tests + conformance scripts + nbval over every notebook.
+test: setup
+	$(PY) -m pytest -q tests book
+
+unit: setup
+	$(PY) -m pytest -q tests
+
+nbval: setup
+	$(PY) -m pytest -q book
+
+book: setup
+	$(PY) -m jupyter_book build book
+
+# Re-execute every notebook in place (virtual time: same outputs every run).
+book-exec: setup
+	$(PY) -m labkit.tools.execute_notebooks book
+
+lab: setup
+	LABKIT_TIME=live $(PY) -m jupyterlab --ip=127.0.0.1 --notebook-dir=book
+
+bench: setup
+	for f in benchmarks/*.py; do echo "== $$f"; $(PY) $$f || exit 1; done
+
+clean:
+	rm -rf book/_build .pytest_cache

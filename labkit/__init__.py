@@ -1,0 +1,59 @@
+"""labkit: a faithful ROS 2 Humble graph inside one Python process.
+
+The public surface a notebook needs is small:
+
+    %load_ext labkit                 # activate: `import rclpy` etc. now resolve to labkit
+    labkit.ros2("topic list -t")     # run a ros2 verb, get returncode/stdout/stderr
+    labkit.sleep(2.0)                # let the graph live for 2 s (simulated in virtual time)
+    labkit.reset()                   # stop every process, clear the graph
+
+Everything else is ordinary ROS 2 code.
+"""
+__version__ = "0.1.0"
+
+__all__ = ["ros2", "sleep", "reset", "activate", "time_mode", "load_ipython_extension",
+           "unload_ipython_extension"]
+
+
+def ros2(command, **kwargs):
+    """Run one `ros2` command line (without the leading `ros2`).
+
+    Returns a CompletedProcess-like object (returncode, stdout, stderr); verbs
+    that keep running (run, echo, hz, ...) return a background job at once.
+    """
+    from labkit.cli.ros2 import run_command
+    return run_command(command, **kwargs)
+
+
+def sleep(seconds):
+    """Let the whole graph run for `seconds` (wall-clock in live mode, simulated in virtual mode)."""
+    from labkit.graph import world
+    world.sleep(seconds)
+
+
+def reset():
+    """Stop every process and background job, shut every context down, clear the graph."""
+    from labkit import process
+    process.reset_all()
+
+
+def time_mode():
+    """'live' or 'virtual' (see labkit/ARCHITECTURE.md, 'Time and determinism')."""
+    from labkit.graph import world
+    return world.mode()
+
+
+def activate():
+    """Make `import rclpy`, `import std_msgs.msg`, ... resolve to labkit (never over a sourced ROS)."""
+    from labkit import compat
+    return compat.activate()
+
+
+def load_ipython_extension(ipython):
+    from labkit.cli import magics
+    magics.load_ipython_extension(ipython)
+
+
+def unload_ipython_extension(ipython):
+    from labkit.cli import magics
+    magics.unload_ipython_extension(ipython)
