@@ -1,0 +1,16 @@
+"""Shared test set-up: virtual time unless a test says otherwise, and a clean
+graph after every test (nothing left running)."""
+import os
+import sys
+
+os.environ.setdefault("LABKIT_TIME", "virtual")
+
+import pytest  # noqa: E402
+
+
+@pytest.fixture(autouse=True)
+def _labkit_clean_graph():
+    yield
+    # Only if the test touched the runtime: importing it here would slow pure tests.
+    if "labkit.process" in sys.modules:
+        sys.modules["labkit.process"].reset_all()
