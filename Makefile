@@ -26,8 +26,11 @@ unit: setup
 nbval: setup
 	$(PY) -m pytest -q book
 
+# Offline HTML book: npm ci (only when node_modules is missing or stale),
+# vendor RequireJS/ipywidgets/MathJax into book/_static/vendor, then
+# jupyter-book build from the stored outputs (see tools/book_build.py).
 book: setup
-	$(PY) -m jupyter_book build book
+	$(PY) tools/book_build.py
 
 # Re-execute every notebook in place (virtual time: same outputs every run).
 book-exec: setup

@@ -1,0 +1,94 @@
+"""IPython magics: `%ros2 ...` (and, from later layers, `%colcon`, `%source`, ...).
+
+`%load_ext labkit` activates the import hook and registers every magic in
+MAGICS; it prints nothing on success. A magic prints like a terminal: stdout,
+then stderr, never a traceback; `> file` and `>> file` redirect stdout.
+"""
+import shlex
+import sys
+
+MAGICS = {}  # magic name -> function(line) ; later layers add theirs with register()
+
+
+def register(name, function):
+    """Add (or replace) a line magic; registered at once if IPython already loaded labkit."""
+    MAGICS[name] = function
+    if _loaded_into is not None:
+        _register_one(_loaded_into, name, function)
+
+
+def split_redirect(line):
+    """'param dump /t > t.yaml' -> (['param', 'dump', '/t'], 't.yaml', 'w')."""
+    lexer = shlex.shlex(line, posix=True, punctuation_chars='>')
+    lexer.whitespace_split = True
+    lexer.commenters = ''
+    tokens = list(lexer)
+    target, mode = None, None
+    for i, token in enumerate(tokens):
+        if token in ('>', '>>'):
+            if i + 1 >= len(tokens):
+                raise ValueError("syntax error near unexpected token `newline'")
+            target, mode = tokens[i + 1], 'a' if token == '>>' else 'w'
+            tokens = tokens[:i] + tokens[i + 2:]
+            break
+    return tokens, target, mode
+
+
+def emit(result, target=None, mode='w'):
+    """Print a finished command like a terminal (stdout possibly into a file)."""
+    stdout = getattr(result, 'stdout', '')
+    stderr = getattr(result, 'stderr', '')
+    if target is not None:
+        with open(target, mode) as f:
+            f.write(stdout)
+    elif stdout:
+        sys.stdout.write(stdout)
+        sys.stdout.flush()
+    if stderr:
+        sys.stderr.write(stderr)
+        sys.stderr.flush()
+
+
+def ros2_magic(line):
+    """%ros2 <noun> <verb> [args] [> file]: run a ros2 command in the notebook."""
+    from labkit.cli.ros2 import run_command
+    from labkit.cli.ros2.jobs import Job
+    try:
+        argv, target, mode = split_redirect(line)
+    except ValueError as e:
+        print(f'ros2: {e}', file=sys.stderr)
+        return
+    result = run_command(argv)
+    if isinstance(result, Job):
+        return  # its output arrives through the process sink, like a terminal's
+    emit(result, target, mode)
+
+
+MAGICS['ros2'] = ros2_magic
+
+_loaded_into = None
+
+
+def _register_one(ipython, name, function):
+    from IPython.core.magic import no_var_expand
+
+    def magic(line):
+        return function(line)
+    magic.__name__ = name
+    magic.__doc__ = function.__doc__
+    # `{linear: {x: 2.0}}` must reach ros2 untouched, as in a shell
+    ipython.register_magic_function(no_var_expand(magic), 'line', name)
+
+
+def load_ipython_extension(ipython):
+    global _loaded_into
+    from labkit import compat
+    compat.activate()
+    for name, function in MAGICS.items():
+        _register_one(ipython, name, function)
+    _loaded_into = ipython
+
+
+def unload_ipython_extension(ipython):
+    global _loaded_into
+    _loaded_into = None

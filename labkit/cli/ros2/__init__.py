@@ -1,0 +1,163 @@
+"""`ros2 <noun> <verb> ...` on labkit: `run_command("topic list -t")`.
+
+One module per noun (node, topic, service, action, interface, param, pkg, run),
+one function per verb, written like ros2cli's verbs on the rclpy API. Short
+verbs return a `CompletedCommand`; verbs that keep running (run, echo, hz, ...)
+start a background job and return its `Job` at once (see jobs.py).
+"""
+import argparse
+import importlib
+import io
+import shlex
+import traceback
+
+from labkit.cli.ros2 import _base
+from labkit.cli.ros2._base import CliError, Parser, ParserExit, Streams
+
+__all__ = ['run_command', 'CompletedCommand', 'register_noun']
+
+# noun -> (module path, one-line doc). Later layers register theirs (bag, launch, ...).
+_NOUNS = {
+    'action': ('labkit.cli.ros2.action', 'Various action related sub-commands'),
+    'interface': ('labkit.cli.ros2.interface', 'Show information about ROS interfaces'),
+    'node': ('labkit.cli.ros2.node', 'Various node related sub-commands'),
+    'param': ('labkit.cli.ros2.param', 'Various param related sub-commands'),
+    'pkg': ('labkit.cli.ros2.pkg', 'Various package related sub-commands'),
+    'run': ('labkit.cli.ros2.run', 'Run a package specific executable'),
+    'service': ('labkit.cli.ros2.service', 'Various service related sub-commands'),
+    'topic': ('labkit.cli.ros2.topic', 'Various topic related sub-commands'),
+}
+
+
+def register_noun(name, module, doc):
+    """Add a `ros2 <name>` command: `module` defines add_arguments(parser, cli_name)."""
+    _NOUNS[name] = (module, doc)
+
+
+class CompletedCommand:
+    """What a finished `ros2` command left behind (like subprocess.CompletedProcess)."""
+
+    def __init__(self, args, returncode, stdout='', stderr='', exception=None):
+        self.args = args
+        self.returncode = returncode
+        self.stdout = stdout
+        self.stderr = stderr
+        self.exception = exception  # an unexpected internal error, kept for debugging
+
+    def check_returncode(self):
+        if self.returncode:
+            import subprocess
+            raise subprocess.CalledProcessError(
+                self.returncode, self.args, self.stdout, self.stderr)
+
+    def text(self):
+        return self.stdout + self.stderr
+
+    def __str__(self):
+        return self.text()
+
+    def __repr__(self):
+        # a notebook shows the command's output, as a terminal would
+        return self.text().rstrip('\n')
+
+    def _repr_pretty_(self, p, cycle):
+        p.text(self.__repr__())
+
+
+def split_command(command):
+    argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
+    if argv[:1] == ['ros2']:
+        argv = argv[1:]
+    return argv
+
+
+def build_parser(argv):
+    parser = Parser(
+        prog='ros2', description='ros2 is an extensible command-line tool for ROS 2.',
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument(
+        '--use-python-default-buffering', action='store_true', default=False,
+        help='Do not force line buffering in stdout and instead use the python default '
+             'buffering, which might be affected by PYTHONUNBUFFERED/-u and depends on '
+             'whatever stdout is interactive or not')
+    width = max(len(n) for n in _NOUNS)
+    description = ''.join(f'{n.ljust(width)}  {_NOUNS[n][1]}\n' for n in sorted(_NOUNS))
+    sub = parser.add_subparsers(
+        title='Commands', description=description,
+        metavar='Call `ros2 <command> -h` for more detailed usage.', parser_class=Parser)
+    sub.dest = ' command'
+    sub.required = False
+    # only the chosen noun builds its verbs (cheap start, and a broken noun spares the rest)
+    chosen = next((a for a in argv if not a.startswith('-')), None)
+    for name in sorted(_NOUNS):
+        module_name, doc = _NOUNS[name]
+        p = sub.add_parser(name, description=doc,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
+        p.set_defaults(_noun=name, _noun_parser=p)
+        if name == chosen:
+            importlib.import_module(module_name).add_arguments(p, f'ros2 {name}')
+    return parser
+
+
+def run_command(command, *, capture=True):
+    """Run one ros2 command line; returns a CompletedCommand, or a Job for long-running verbs."""
+    try:
+        argv = split_command(command)
+    except ValueError as e:  # unbalanced quotes
+        return CompletedCommand([], 1, '', f'ros2: error: {e}\n')
+    if argv[:1] == ['jobs']:
+        from labkit.cli.ros2 import jobs
+        return jobs.jobs_command(argv)
+    out, err = io.StringIO(), io.StringIO()
+    streams = Streams(out, err)
+    _base._streams = streams
+    try:
+        parser = build_parser(argv)
+        args = parser.parse_args(argv)
+    except ParserExit as e:
+        return CompletedCommand(argv, e.status, out.getvalue(), err.getvalue())
+    verb = getattr(args, '_verb', None)
+    if verb is None:
+        target = getattr(args, '_noun_parser', parser)
+        target.print_help()
+        return CompletedCommand(argv, 0, out.getvalue(), err.getvalue())
+    background = getattr(args, '_background', None)
+    if background is not None and background(args):
+        from labkit.cli.ros2 import jobs
+        if getattr(args, '_noun', None) == 'run':
+            from labkit.cli.ros2 import run
+            try:
+                run.check(args.package_name, args.executable_name)
+            except CliError as e:
+                return CompletedCommand(argv, 1, out.getvalue(), f'{e}\n')
+            return run.start_run_job(argv, args)
+        return jobs.start_verb_job(argv, verb, args)
+    rc, exc = call_verb(verb, args, streams)
+    return CompletedCommand(argv, rc, out.getvalue(), err.getvalue(), exc)
+
+
+def call_verb(verb, args, streams):
+    """Run a verb; map its result and errors to (exit code, unexpected exception)."""
+    from labkit.graph.world import Deadlock
+    try:
+        result = verb(args, streams)
+    except Deadlock:
+        streams.eprint('labkit: nothing in the graph can answer, so this command would wait '
+                       'forever (virtual time)')
+        return 1, None
+    except (CliError, RuntimeError) as e:
+        streams.eprint(str(e))
+        return 1, None
+    except KeyboardInterrupt:
+        return 2, None
+    except Exception as e:  # a labkit bug or a deadlock: one line, never a traceback
+        name = type(e).__name__
+        streams.eprint(f'ros2: {name}: {e}' if str(e) else f'ros2: {name}')
+        e.__labkit_traceback__ = traceback.format_exc()
+        return 1, e
+    if result is None:
+        return 0, None
+    if isinstance(result, str):
+        streams.eprint(result)
+        return 1, None
+    return int(result), None

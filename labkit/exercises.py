@@ -1,0 +1,164 @@
+"""Check cells for the book's exercises.
+
+A chapter's exercise ends with a cell like
+
+    from labkit.exercises import Checker
+    c = Checker("练习 3.1")
+    c.node("/turtlesim")
+    c.topic("/turtle1/cmd_vel", "geometry_msgs/msg/Twist", publishers=1)
+    c.report()
+
+Each check looks at the live graph (through a hidden node, as the ros2 CLI
+does) and records one line in Chinese: what is right, or what is missing and
+a hint. `report()` prints the lines and a summary and returns True when all
+passed, so a notebook can also `assert c.report()`.
+"""
+from __future__ import annotations
+
+import os
+
+_node = None
+
+
+def _graph_node():
+    """A hidden node of the notebook's own process, created once."""
+    global _node
+    import labkit.rclpy as rclpy
+    from labkit.graph import world
+
+    if _node is not None and _node.context.ok():
+        world.settle()
+        return _node
+    ctx = rclpy.get_default_context()
+    if not ctx.ok():
+        rclpy.init()
+    _node = rclpy.create_node("_labkit_exercise_checker", start_parameter_services=False)
+    world.settle()
+    return _node
+
+
+class Checker:
+    """Collects the results of the checks of one exercise."""
+
+    def __init__(self, title: str):
+        self.title = title
+        self.results: list[tuple[bool, str]] = []
+
+    # -- the record ---------------------------------------------------------
+    def that(self, ok: bool, good: str, bad: str) -> bool:
+        """Record a check of your own: `good` is said when ok, `bad` otherwise."""
+        self.results.append((bool(ok), good if ok else bad))
+        return bool(ok)
+
+    @property
+    def passed(self) -> bool:
+        return bool(self.results) and all(ok for ok, _ in self.results)
+
+    def report(self) -> bool:
+        print(f"【{self.title}】")
+        for ok, text in self.results:
+            print(("  ✅ " if ok else "  ❌ ") + text)
+        missing = sum(1 for ok, _ in self.results if not ok)
+        if not self.results:
+            print("  （没有检查项）")
+        elif missing:
+            print(f"还差 {missing} 项，改好后再运行这个单元格。")
+        else:
+            print("全部正确！")
+        return self.passed
+
+    # -- the graph ----------------------------------------------------------
+    def node(self, name: str) -> bool:
+        """A node with this fully qualified name is running."""
+        names = _node_names()
+        return self.that(name in names, f"节点 {name} 正在运行",
+                         f"没有找到节点 {name}（现在有：{', '.join(sorted(names)) or '无'}）")
+
+    def no_node(self, name: str) -> bool:
+        names = _node_names()
+        return self.that(name not in names, f"节点 {name} 已经停止", f"节点 {name} 还在运行")
+
+    def topic(self, name: str, type_name: str | None = None, *, publishers: int | None = None,
+              subscribers: int | None = None) -> bool:
+        """A topic exists, optionally with this type and these endpoint counts."""
+        node = _graph_node()
+        types = dict(node.get_topic_names_and_types())
+        if name not in types:
+            return self.that(False, "", f"没有找到话题 {name}")
+        ok = self.that(True, f"话题 {name} 存在", "")
+        if type_name is not None:
+            ok &= self.that(type_name in types[name], f"{name} 的类型是 {type_name}",
+                            f"{name} 的类型是 {', '.join(types[name])}，不是 {type_name}")
+        if publishers is not None:
+            n = node.count_publishers(name)
+            ok &= self.that(n == publishers, f"{name} 有 {n} 个发布者",
+                            f"{name} 应该有 {publishers} 个发布者，现在有 {n} 个")
+        if subscribers is not None:
+            n = node.count_subscribers(name)
+            ok &= self.that(n == subscribers, f"{name} 有 {n} 个订阅者",
+                            f"{name} 应该有 {subscribers} 个订阅者，现在有 {n} 个")
+        return ok
+
+    def service(self, name: str, type_name: str | None = None) -> bool:
+        types = dict(_graph_node().get_service_names_and_types())
+        if name not in types:
+            return self.that(False, "", f"没有找到服务 {name}")
+        if type_name is None:
+            return self.that(True, f"服务 {name} 存在", "")
+        return self.that(type_name in types[name], f"服务 {name} 的类型是 {type_name}",
+                         f"服务 {name} 的类型是 {', '.join(types[name])}，不是 {type_name}")
+
+    def parameter(self, node_name: str, name: str, expected) -> bool:
+        """A node's parameter has this value (asked through its get_parameters service)."""
+        value = get_parameter(node_name, name)
+        if value is _MISSING:
+            return self.that(False, "", f"读不到 {node_name} 的参数 {name}")
+        return self.that(value == expected, f"{node_name} 的参数 {name} = {value!r}",
+                         f"{node_name} 的参数 {name} = {value!r}，期望 {expected!r}")
+
+    def file(self, path: str, *, contains: str | None = None) -> bool:
+        if not os.path.exists(path):
+            return self.that(False, "", f"文件 {path} 不存在")
+        if contains is None:
+            return self.that(True, f"文件 {path} 存在", "")
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        return self.that(contains in text, f"{path} 里有 {contains!r}",
+                         f"{path} 里没有 {contains!r}")
+
+
+def _node_names() -> set[str]:
+    node = _graph_node()
+    out = set()
+    for name, ns in node.get_node_names_and_namespaces():
+        if name.startswith("_"):
+            continue
+        out.add(ns.rstrip("/") + "/" + name)
+    return out
+
+
+_MISSING = object()
+
+
+def get_parameter(node_name: str, name: str, timeout_sec: float = 5.0):
+    """A parameter's Python value through `<node>/get_parameters`, or _MISSING."""
+    from labkit.interfaces import get_type
+    from labkit.rclpy.parameter import parameter_value_to_python
+
+    node = _graph_node()
+    GetParameters = get_type("rcl_interfaces/srv/GetParameters")
+    client = node.create_client(GetParameters, node_name.rstrip("/") + "/get_parameters")
+    try:
+        if not client.wait_for_service(timeout_sec=timeout_sec):
+            return _MISSING
+        future = client.call_async(GetParameters.Request(names=[name]))
+        import labkit.rclpy as rclpy
+        rclpy.spin_until_future_complete(node, future, timeout_sec=timeout_sec)
+        if not future.done() or not future.result().values:
+            return _MISSING
+        value = future.result().values[0]
+        if value.type == 0:
+            return _MISSING
+        return parameter_value_to_python(value)
+    finally:
+        node.destroy_client(client)

@@ -1,0 +1,1 @@
+"""Layer 2: names, --ros-args, the in-process middleware and the world clock."""

@@ -1,0 +1,292 @@
+""""Processes" (ARCHITECTURE.md, layer 3): each `ros2 run`/launched executable runs in
+its own thread(s) with its own default Context, global executor and logging state,
+as if it were its own OS process. The notebook/script itself is process `main`.
+"""
+import io
+import itertools
+import sys
+import threading
+import traceback
+
+from labkit.graph import world
+
+__all__ = ["Process", "current", "start", "processes", "reset_all", "main_process"]
+
+_pids = itertools.count(4001)         # fake pids, deterministic
+_lock = threading.RLock()
+
+
+class RclpyState:
+    """rclpy's per-process globals."""
+
+    def __init__(self):
+        self.default_context = None
+        self.global_executor = None
+        self.logging = None             # rcutils-like config, made by labkit.rclpy on demand
+        self.contexts = []              # every Context initialised in this process
+        self.nodes = []                 # every Node created in this process
+
+
+class Process:
+    def __init__(self, name, argv=None, pid=None):
+        self.name = name
+        self.argv = list(argv or [])
+        self.pid = pid if pid is not None else next(_pids)
+        self.output = []                # lines printed (stdout and stderr)
+        self.rclpy = RclpyState()
+        self.thread = None
+        self.returncode = None
+        self.echo = True                # echo output to the notebook/console
+        self.sink = None                # optional callable(stream_name, text)
+        self._partial = {"stdout": "", "stderr": ""}
+        self._sigint = False            # a stop request, delivered like SIGINT
+
+    def __repr__(self):
+        state = "running" if self.running else f"exited {self.returncode}"
+        return f"<Process {self.name} pid={self.pid} {state}>"
+
+    @property
+    def running(self):
+        return self.thread is not None and self.returncode is None
+
+    # -- output --------------------------------------------------------------
+    def _write(self, stream_name, text):
+        buf = self._partial[stream_name] + text
+        *lines, rest = buf.split("\n")
+        self.output.extend(lines)
+        self._partial[stream_name] = rest
+        if self.sink is not None:
+            self.sink(stream_name, text)
+        elif self.echo:
+            target = _original[stream_name]
+            if target is not None:
+                try:
+                    target.write(text)
+                    target.flush()
+                except Exception:
+                    pass
+
+    def _flush_partial(self):
+        for key in ("stdout", "stderr"):
+            if self._partial[key]:
+                self.output.append(self._partial[key])
+                self._partial[key] = ""
+
+    # -- lifecycle -----------------------------------------------------------
+    def stop(self, timeout_s=2.0):
+        """Shut its contexts (so spin returns), join its threads, destroy its nodes."""
+        if self is MAIN:
+            _clear_rclpy_state(self)
+            return
+        # like SIGINT on a real rclpy process: contexts shut down, KeyboardInterrupt in main
+        for ctx in list(self.rclpy.contexts):
+            try:
+                ctx.try_shutdown()
+            except Exception:
+                pass
+        if self.running:
+            self._sigint = True
+            world.notify()
+        if self.thread is not None and self.thread is not threading.current_thread():
+            world.join(self.thread, timeout_s)
+        _clear_rclpy_state(self)
+        if self.returncode is None:
+            self.returncode = -2 if (self.thread and self.thread.is_alive()) else 0
+        with _lock:
+            if self in _processes:
+                _processes.remove(self)
+        self._flush_partial()
+
+    def wait(self, timeout_s=None):
+        """Wait (a world wait point) until the process ends; returns its returncode."""
+        if self.thread is not None:
+            world.wait(lambda: not self.running, timeout_s)
+        return self.returncode
+
+
+def _clear_rclpy_state(proc):
+    state = proc.rclpy
+    for node in list(state.nodes):
+        try:
+            node.destroy_node()
+        except Exception:
+            pass
+    state.nodes.clear()
+    for ctx in list(state.contexts):
+        try:
+            ctx.try_shutdown()
+        except Exception:
+            pass
+    state.contexts.clear()
+    state.default_context = None
+    state.global_executor = None
+    state.logging = None
+
+
+MAIN = Process("main", argv=list(sys.argv), pid=next(_pids))
+_processes = []
+
+
+def main_process():
+    return MAIN
+
+
+def current():
+    """The process of the calling thread (threads inherit their starter's process)."""
+    return getattr(threading.current_thread(), "_labkit_process", None) or MAIN
+
+
+# Threads started inside a process belong to it, like threads of a real process.
+_original_thread_start = threading.Thread.start
+
+
+def _thread_start(self):
+    if getattr(self, "_labkit_process", None) is None:
+        proc = current()
+        if proc is not MAIN:
+            self._labkit_process = proc
+    run = self.run
+
+    def run_then_leave_world():
+        # a thread that waited at a world wait point must hand the baton on when it ends
+        try:
+            run()
+        finally:
+            world.thread_exit()
+    self.run = run_then_leave_world
+    return _original_thread_start(self)
+
+
+threading.Thread.start = _thread_start
+
+
+# ------------------------------------------------------------ output proxy
+_original = {"stdout": None, "stderr": None}
+
+
+class _StreamProxy(io.TextIOBase):
+    """sys.stdout/sys.stderr: the main process writes through, others to their own sink."""
+
+    def __init__(self, name, target):
+        self._name = name
+        self._target = target
+
+    def write(self, text):
+        proc = current()
+        if proc is MAIN:
+            return self._target.write(text)
+        proc._write(self._name, text)
+        return len(text)
+
+    def flush(self):
+        try:
+            self._target.flush()
+        except Exception:
+            pass
+
+    def __getattr__(self, item):
+        return getattr(self._target, item)
+
+    @property
+    def encoding(self):
+        return getattr(self._target, "encoding", "utf-8")
+
+    def isatty(self):
+        return False
+
+    def fileno(self):
+        return self._target.fileno()
+
+    def writable(self):
+        return True
+
+
+def install_output_proxy():
+    for name in ("stdout", "stderr"):
+        stream = getattr(sys, name)
+        if not isinstance(stream, _StreamProxy):
+            _original[name] = stream
+            setattr(sys, name, _StreamProxy(name, stream))
+        else:
+            _original[name] = stream._target
+
+
+# ------------------------------------------------------------ start
+def _resolve(argv):
+    from labkit import executables
+    if len(argv) < 2:
+        raise LookupError("ros2 run needs a package and an executable")
+    package, executable = argv[0], argv[1]
+    target = executables.lookup(package, executable)
+    if target is None:
+        raise LookupError("No executable found")
+    exe_path = f"/opt/ros/humble/lib/{package}/{executable}"
+    return executables.resolve(target), [exe_path] + list(argv[2:])
+
+
+def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
+    """Start a process: `argv` as `ros2 run` gets it (package, executable, args...),
+    or `main=` a callable taking args=. Returns once it reached its first wait point."""
+    if main is None:
+        main, args = _resolve(list(argv))
+    elif args is None:
+        args = [name or getattr(main, "__name__", "process")]
+    if name is None:
+        name = argv[1] if argv and len(argv) > 1 else getattr(main, "__name__", "process")
+    install_output_proxy()
+    proc = Process(name, argv=args)
+    proc.echo = echo
+    proc.sink = sink
+
+    def body():
+        threading.current_thread()._labkit_process = proc
+        code = 0
+        try:
+            result = main(args=args)
+            if isinstance(result, int):
+                code = result
+        except SystemExit as exc:
+            code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+            if exc.code is not None and not isinstance(exc.code, int):
+                sys.stderr.write(f"{exc.code}\n")
+        except KeyboardInterrupt:
+            code = -2
+        except BaseException:
+            sys.stderr.write(traceback.format_exc())
+            code = 1
+        finally:
+            proc.returncode = code
+            # a real process that exits leaves nothing behind in the graph
+            _clear_rclpy_state(proc)
+            proc._flush_partial()
+            world.notify()
+
+    with _lock:
+        _processes.append(proc)
+    proc.thread = world.start_thread(body, name=f"labkit-{name}-{proc.pid}")
+    proc.thread._labkit_process = proc
+    _wait_first_wait_point(proc)
+    return proc
+
+
+def _wait_first_wait_point(proc):
+    thread = proc.thread
+    if world.mode() == "virtual":
+        world.wait(lambda: world.finished(thread) or world.thread_waiting(thread), None)
+    else:
+        world.wait_started(thread, 5.0)
+
+
+def processes():
+    """Running and finished-but-not-reaped background processes, in start order."""
+    with _lock:
+        return list(_processes)
+
+
+def reset_all():
+    """Stop every process, shut every context down, clear the graph."""
+    for proc in reversed(processes()):
+        proc.stop()
+    MAIN.stop()
+    from labkit.graph.registry import GRAPH
+    GRAPH.clear()

@@ -1,0 +1,135 @@
+"""rclpy.context.Context: the lifecycle of init and shutdown (one per process by default)."""
+from inspect import ismethod
+import os
+import sys
+import threading
+import weakref
+
+from labkit.graph import arguments as _arguments
+from labkit.graph import world
+
+
+class Context:
+    """Encapsulates the lifecycle of init and shutdown."""
+
+    def __init__(self):
+        self._lock = threading.RLock()
+        self._callbacks = []
+        self._logging_initialized = False
+        self.__context = None           # dict while initialised
+        self._ok = False
+        self._domain_id = 0
+        self._arguments = None
+        self._process = None
+
+    @property
+    def handle(self):
+        return self.__context
+
+    def destroy(self):
+        pass
+
+    def init(self, args=None, *, initialize_logging=True, domain_id=None):
+        """Initialize ROS communications for this context."""
+        from labkit import process
+        from labkit.rclpy.exceptions import RCLError, UnknownROSArgsError
+        with self._lock:
+            if domain_id is not None and domain_id < 0:
+                raise RuntimeError(
+                    'Domain id ({}) should not be lower than zero.'.format(domain_id))
+            if self.__context is not None:
+                raise RuntimeError('Context.init() must only be called once')
+            argv = list(args if args is not None else sys.argv)
+            try:
+                parsed = _arguments.parse(argv)
+            except _arguments.ArgumentError as exc:
+                raise RCLError(f'failed to initialize rcl: {exc}') from None
+            if parsed.unparsed_ros_args:
+                raise UnknownROSArgsError(repr([argv[i] for i in parsed.unparsed_ros_args]))
+            if domain_id is None:
+                env = os.environ.get('ROS_DOMAIN_ID', '')
+                domain_id = int(env) if env.strip().isdigit() else 0
+            self._domain_id = domain_id
+            self._arguments = parsed
+            self.__context = {'args': argv}
+            self._ok = True
+            proc = process.current()
+            self._process = proc
+            proc.rclpy.contexts.append(self)
+            if initialize_logging and not self._logging_initialized:
+                self._configure_logging(parsed)
+                self._logging_initialized = True
+
+    @staticmethod
+    def _configure_logging(parsed):
+        from labkit.rclpy.impl import rcutils_logger
+        cfg = rcutils_logger._config()
+        for name, level in parsed.log_levels.items():
+            if name == '':
+                cfg.default_level = level
+            else:
+                cfg.levels[name] = level
+        cfg.stdout_logs = parsed.stdout_logs
+        cfg.rosout_logs = parsed.rosout_logs
+
+    def ok(self):
+        with self._lock:
+            return self.__context is not None and self._ok
+
+    def _call_on_shutdown_callbacks(self):
+        for cb in self._callbacks:
+            callback = cb() if isinstance(cb, weakref.WeakMethod) else cb
+            if callback is not None:
+                callback()
+        self._callbacks = []
+
+    def shutdown(self):
+        if self.__context is None:
+            raise RuntimeError('Context must be initialized before it can be shutdown')
+        with self._lock:
+            if not self._ok:
+                from labkit.rclpy.exceptions import RCLError
+                raise RCLError('failed to shutdown: rcl_shutdown already called on the given '
+                               'context')
+            self._ok = False
+            self._call_on_shutdown_callbacks()
+        world.notify()
+
+    def try_shutdown(self):
+        if self.__context is None:
+            return
+        with self._lock:
+            if self._ok:
+                self._ok = False
+                self._call_on_shutdown_callbacks()
+        world.notify()
+
+    def _remove_callback(self, weak_method):
+        try:
+            self._callbacks.remove(weak_method)
+        except ValueError:
+            pass
+
+    def on_shutdown(self, callback):
+        if not callable(callback):
+            raise TypeError('callback should be a callable, got {}', type(callback))
+        if self.__context is None:
+            from labkit.rclpy.exceptions import InvalidHandle
+            raise InvalidHandle('cannot use Destroyable because destruction was requested')
+        with self._lock:
+            if not self._ok:
+                callback()
+            elif ismethod(callback):
+                self._callbacks.append(weakref.WeakMethod(callback, self._remove_callback))
+            else:
+                self._callbacks.append(callback)
+
+    def get_domain_id(self):
+        if self.__context is None:
+            raise RuntimeError('Context must be initialized before it can have a domain id')
+        return self._domain_id
+
+    # labkit: the parsed global --ros-args of this context
+    @property
+    def arguments(self):
+        return self._arguments

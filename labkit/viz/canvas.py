@@ -1,0 +1,266 @@
+"""The turtlesim window, in two faces: a live canvas widget and a static PNG.
+
+    from labkit.viz.canvas import TurtleCanvas
+    c = TurtleCanvas.attach()     # the turtlesim running in this kernel
+    c                             # live widget in JupyterLab + PNG for the book
+    c.snapshot()                  # PNG bytes of the current state (500x500)
+    c.replay(seconds=5)           # animated picture of the last 5 s
+
+The live widget is an ipycanvas MultiCanvas with three layers: the background
+colour, the pen trails (drawn incrementally from the simulator's pen log), and
+the turtles. A daemon thread redraws at most `fps` times a second and only
+after the simulator reported a change, so an idle canvas costs nothing.
+"""
+import io
+import threading
+import time
+
+import numpy as np
+from PIL import Image
+
+from labkit.sims.turtlesim import physics, sprites
+
+SIZE = physics.WINDOW_SIZE
+# ipycanvas batches commands in one global manager: draw from one thread at a time
+_DRAW_LOCK = threading.Lock()
+
+
+# ------------------------------------------------------------------ static rendering
+def compose(background, turtles, pixels):
+    """One frame as a PIL RGB image: background, pen layer, then the turtles.
+
+    `turtles` holds (name, x_px, y_px, orient, sprite) as TurtleWorld.snapshot() gives them.
+    """
+    image = Image.new("RGB", (SIZE, SIZE), tuple(background))
+    pen = Image.frombuffer("RGBA", (SIZE, SIZE), np.ascontiguousarray(pixels), "raw", "RGBA", 0, 1)
+    image.paste(pen, (0, 0), pen)       # alpha is 0 or 255: the pen layer is copied where drawn
+    for _, x, y, orient, look in turtles:
+        turned = sprites.rotated(look, int(round(np.degrees(orient))) % 360)
+        w, h = turned.size
+        image.paste(turned, (int(round(x - w / 2)), int(round(y - h / 2))), turned)
+    return image
+
+
+def render(world):
+    """The current state of a TurtleWorld as a PIL RGB image (500x500)."""
+    with world.lock:
+        background, turtles, _ = world.snapshot()
+        pixels = world.path.pixels.copy()
+    return compose(background, turtles, pixels)
+
+
+def png_bytes(image):
+    buf = io.BytesIO()
+    image.save(buf, format="PNG")
+    return buf.getvalue()
+
+
+def _find_world(source=None):
+    """A TurtleWorld from a TurtleSim node, a world, or the newest running turtlesim."""
+    if source is None:
+        from labkit.sims.turtlesim import node
+        sims = node.running()
+        if not sims:
+            raise RuntimeError("turtlesim is not running (start it with "
+                               "`ros2 run turtlesim turtlesim_node`)")
+        source = sims[-1]
+    return source if isinstance(source, physics.TurtleWorld) else source.world
+
+
+# ------------------------------------------------------------------------ the canvas
+class TurtleCanvas:
+    """A view of one turtlesim. Display it for the live widget (plus a PNG)."""
+
+    def __init__(self, sim=None, fps=30):
+        self.world = _find_world(sim)
+        self._node = sim if sim is not None and hasattr(sim, "world") else None
+        self._newest = sim is None      # attached to "the running turtlesim": follow restarts
+        self.fps = fps
+        self.frames_drawn = 0           # live frames sent to the browser
+        self._widget = None
+        self._layers = None
+        self._images = {}               # sprite index -> ipywidgets.Image
+        self._wake = threading.Event()
+        self._stop = threading.Event()
+        self._thread = None
+        self._drawn = None              # (background, turtles, pen seq) last sent
+
+    @classmethod
+    def attach(cls, sim=None, fps=30):
+        """A canvas on the newest turtlesim running in this kernel (or on `sim`)."""
+        return cls(sim, fps=fps)
+
+    # -- static faces -----------------------------------------------------------------
+    def image(self):
+        """The current picture as a PIL image."""
+        self._follow_restart()
+        return render(self.world)
+
+    def _follow_restart(self):
+        """If attached to 'the running turtlesim' and a newer one started, switch to it."""
+        if not self._newest:
+            return False
+        from labkit.sims.turtlesim import node
+        sims = node.running()
+        if not sims or sims[-1].world is self.world:
+            return False
+        old, self.world = self.world, sims[-1].world
+        if self._widget is not None:
+            if self._wake.set in old.listeners:
+                old.listeners.remove(self._wake.set)
+            self.world.listeners.append(self._wake.set)
+            self._drawn = None          # next frame redraws everything
+            self._wake.set()
+        return True
+
+    def snapshot(self):
+        """The current picture as PNG bytes (500x500, like the real window)."""
+        return png_bytes(self.image())
+
+    def replay(self, seconds=5.0, fps=15, format="gif", scale=1.0):
+        """An animated picture (GIF or WebP) of the last `seconds` of simulation."""
+        from labkit.viz.replay import replay
+        self._follow_restart()
+        return replay(self.world, seconds=seconds, fps=fps, format=format, scale=scale)
+
+    def _repr_png_(self):
+        return self.snapshot()
+
+    def _ipython_display_(self):
+        from labkit.viz.display import show
+        widget = self.widget
+        self.start()
+        show(widget, png=self.snapshot(), text="<turtlesim canvas>")
+
+    # -- live face ----------------------------------------------------------------------
+    @property
+    def widget(self):
+        if self._widget is None:
+            self._build()
+        return self._widget
+
+    def _build(self):
+        from ipycanvas import MultiCanvas
+        self._widget = MultiCanvas(3, width=SIZE, height=SIZE)
+        self._layers = [self._widget[i] for i in range(3)]
+        trails = self._layers[1]
+        trails.line_cap = "square"      # Qt's default pen cap
+        self._draw(full=True)
+        self.world.listeners.append(self._wake.set)
+
+    def start(self):
+        """Start following the simulation (idempotent)."""
+        if self._thread is not None and self._thread.is_alive():
+            return
+        self.widget
+        self._stop.clear()
+        # a plain thread: it only reads the world, so it never takes part in virtual time
+        self._thread = threading.Thread(target=self._follow, name="turtle-canvas", daemon=True)
+        self._thread.start()
+
+    def stop(self):
+        """Stop following (the widget keeps its last picture)."""
+        self._stop.set()
+        self._wake.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+        self._thread = None
+        if self._wake.set in self.world.listeners:
+            self.world.listeners.remove(self._wake.set)
+
+    def close(self):
+        self.stop()
+        if self._widget is not None:
+            self._widget.close()
+
+    def _follow(self):
+        period = 1.0 / self.fps
+        while not self._stop.is_set():
+            if not self._wake.wait(timeout=1.0):
+                # idle: nothing changed; but turtlesim may have restarted or ended
+                if not self._follow_restart() and self._source_ended():
+                    break
+                continue
+            self._wake.clear()
+            if self._stop.is_set():
+                break
+            started = time.monotonic()
+            try:
+                self._draw()
+            except Exception:           # a closed widget or dead kernel ends the thread
+                break
+            rest = period - (time.monotonic() - started)
+            if rest > 0:
+                self._stop.wait(rest)   # at most `fps` frames a second
+
+    def _source_ended(self):
+        """A canvas on one given turtlesim node stops following when that node is gone."""
+        if self._node is None:
+            return False
+        from labkit.sims.turtlesim import node
+        return self._node not in node.running()
+
+    def _sprite_image(self, look):
+        img = self._images.get(look)
+        if img is None:
+            from ipywidgets import Image as ImageWidget
+            img = self._images[look] = ImageWidget(value=sprites.sprite_png(look), format="png")
+        return img
+
+    def _draw(self, full=False):
+        """Send what changed since the last frame to the browser."""
+        from ipycanvas import hold_canvas
+        background_layer, trails, turtle_layer = self._layers
+        with self.world.lock:
+            background, turtles, seq = self.world.snapshot()
+            last = self._drawn
+            ops = None if (full or last is None) else self.world.ops_since(last[2])
+            pixels = self.world.path.pixels.copy() if ops is None else None
+        if last is not None and (background, turtles, seq) == last and not full:
+            return
+        with _DRAW_LOCK, hold_canvas():       # one message per frame
+            if full or last is None or last[0] != background:
+                background_layer.fill_style = "rgb(%d, %d, %d)" % background
+                background_layer.fill_rect(0, 0, SIZE, SIZE)
+            if ops is None:
+                trails.clear()
+                trails.put_image_data(pixels, 0, 0)
+            elif ops:
+                _stroke_ops(trails, ops)
+            if full or last is None or last[1] != turtles:
+                turtle_layer.clear()
+                for _, x, y, orient, look in turtles:
+                    turtle_layer.save()
+                    turtle_layer.translate(x, y)
+                    turtle_layer.rotate(-orient)     # canvas angles turn clockwise (y down)
+                    turtle_layer.draw_image(self._sprite_image(look), -sprites.SIZE / 2,
+                                            -sprites.SIZE / 2)
+                    turtle_layer.restore()
+        self._drawn = (background, turtles, seq)
+        self.frames_drawn += 1
+
+
+def _stroke_ops(layer, ops):
+    """Draw logged pen operations; runs of same-width lines go out as one batched command."""
+    segments, colors, width = [], [], None
+
+    def flush():
+        if segments:
+            layer.line_width = width
+            layer.stroke_styled_line_segments(np.array(segments, dtype=np.float64),
+                                              np.array(colors, dtype=np.uint8))
+            segments.clear()
+            colors.clear()
+
+    for op in ops:
+        if op[0] == "clear":
+            flush()
+            layer.clear()
+            continue
+        _, x0, y0, x1, y1, rgb, w = op
+        if w != width:
+            flush()
+            width = w
+        segments.append(((x0, y0), (x1, y1)))
+        colors.append(rgb)
+    flush()

@@ -1,0 +1,88 @@
+"""The keyboard of turtle_teleop_key in a notebook: a focusable box that takes real
+key presses (ipyevents) and also shows on-screen buttons.
+
+Click the box (it gets a focus outline), then use the arrow keys and
+G B V C D E R T / F / Q exactly as in the terminal; or click the buttons.
+"""
+import html
+
+import ipywidgets as widgets
+
+from labkit.sims.turtlesim.keys import BANNER, key_name
+
+# button label, key name, tooltip
+_ROTATIONS = [("E", "e"), ("R", "r"), ("T", "t"), ("D", "d"), ("F", "f"), ("G", "g"),
+              ("C", "c"), ("V", "v"), ("B", "b")]
+_ARROWS = [("", None), ("\u2191", "up"), ("", None),
+           ("\u2190", "left"), ("\u2193", "down"), ("\u2192", "right")]
+
+
+def _spacer():
+    return widgets.Label("", layout=widgets.Layout(width="24px"))
+
+
+class TeleopWidget:
+    """Calls `press(key_name)` for every key pressed or button clicked."""
+
+    def __init__(self, press, title="turtle_teleop_key"):
+        from ipyevents import Event
+        self._press = press
+        self.pressed = []            # key names seen, newest last (for display and tests)
+        self.status = widgets.HTML(self._status_text())
+        arrows = widgets.GridBox(
+            [self._button(label, key) for label, key in _ARROWS],
+            layout=widgets.Layout(grid_template_columns="repeat(3, 44px)", grid_gap="4px"))
+        rotations = widgets.GridBox(
+            [self._button(label, key) for label, key in _ROTATIONS],
+            layout=widgets.Layout(grid_template_columns="repeat(3, 44px)", grid_gap="4px"))
+        quit_button = self._button("Q", "q", width="60px")
+        help_text = widgets.HTML("<pre style='margin:0;font-size:11px'>%s</pre>" % BANNER)
+        self.box = widgets.VBox(
+            [widgets.HTML("<b>%s</b> &mdash; click here, then type" % title), help_text,
+             widgets.HBox([arrows, _spacer(), rotations, _spacer(), quit_button],
+                          layout=widgets.Layout(align_items="center")),
+             self.status],
+            layout=widgets.Layout(border="1px solid #888", padding="6px", width="fit-content"))
+        self.events = Event(source=self.box, watched_events=["keydown"],
+                            prevent_default_action=True)
+        self.events.on_dom_event(self._on_key)
+
+    def _button(self, label, key, width="44px"):
+        if key is None:
+            return widgets.Label("", layout=widgets.Layout(width=width))
+        button = widgets.Button(description=label, layout=widgets.Layout(width=width),
+                                tooltip=key)
+        button.on_click(lambda _: self.press(key))
+        return button
+
+    def _on_key(self, event):
+        key = event.get("key", "")
+        # the terminal version reads lower-case letters only (and arrows)
+        if len(key) == 1 and not key.islower():
+            return
+        if key_name(key) is not None:
+            self.press(key)
+
+    def press(self, key):
+        name = key_name(key)
+        if name is None:
+            return
+        self.pressed.append(name)
+        self.status.value = self._status_text()
+        self._press(name)
+
+    def _status_text(self):
+        last = self.pressed[-1] if self.pressed else "none"
+        return "<span style='font-size:11px;color:#555'>last key: %s</span>" % last
+
+    def show(self):
+        from labkit.viz.display import show
+        # static face (HTML book): the instructions as the terminal prints them
+        show(self.box, text=BANNER, html="<pre>%s</pre>" % html.escape(BANNER))
+
+    def _ipython_display_(self):
+        self.show()
+
+    def close(self):
+        self.events.close()
+        self.box.close()

@@ -1,0 +1,18 @@
+import os
+
+import pytest
+
+import labkit.interfaces as li
+
+DATA = os.path.join(os.path.dirname(__file__), 'data')
+TEST_SHARE = os.path.join(DATA, 'share')
+
+
+@pytest.fixture(scope='module')
+def test_msgs():
+    """test_msgs (rosidl's test interfaces) as an extra share root, removed afterwards."""
+    li.add_share_path(TEST_SHARE)
+    try:
+        yield
+    finally:
+        li.remove_share_path(TEST_SHARE)
