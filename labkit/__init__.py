@@ -35,6 +35,11 @@ def reset():
     """Stop every process and background job, shut every context down, clear the graph."""
     from labkit import process
     process.reset_all()
+    try:  # goal ids restart too, so a notebook re-run from here prints the same ids
+        from labkit.rclpy.action import _common
+        _common.reset_virtual_uuids()
+    except (ImportError, AttributeError):
+        pass
 
 
 def time_mode():

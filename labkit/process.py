@@ -89,6 +89,10 @@ class Process:
             world.notify()
         if self.thread is not None and self.thread is not threading.current_thread():
             world.join(self.thread, timeout_s)
+        for thread in threading.enumerate():     # the other threads it started
+            if getattr(thread, "_labkit_process", None) is self and \
+                    thread is not threading.current_thread() and thread is not self.thread:
+                world.join(thread, timeout_s)
         _clear_rclpy_state(self)
         if self.returncode is None:
             self.returncode = -2 if (self.thread and self.thread.is_alive()) else 0
@@ -290,3 +294,5 @@ def reset_all():
     MAIN.stop()
     from labkit.graph.registry import GRAPH
     GRAPH.clear()
+    # virtual time starts over too: what follows a reset prints the same every run
+    world.restart_clock()

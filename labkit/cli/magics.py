@@ -35,18 +35,22 @@ def split_redirect(line):
 
 
 def emit(result, target=None, mode='w'):
-    """Print a finished command like a terminal (stdout possibly into a file)."""
-    stdout = getattr(result, 'stdout', '')
-    stderr = getattr(result, 'stderr', '')
+    """Print a finished command as a terminal would: in the order it printed.
+
+    With `target`, stdout goes to that file (`>` / `>>`) and only stderr is shown.
+    """
+    chunks = getattr(result, 'chunks', None)
+    if chunks is None:
+        chunks = [('stdout', result.stdout), ('stderr', result.stderr)]
     if target is not None:
         with open(target, mode) as f:
-            f.write(stdout)
-    elif stdout:
-        sys.stdout.write(stdout)
-        sys.stdout.flush()
-    if stderr:
-        sys.stderr.write(stderr)
-        sys.stderr.flush()
+            f.write(''.join(text for name, text in chunks if name == 'stdout'))
+    for name, text in chunks:
+        if name == 'stdout' and target is not None:
+            continue
+        stream = sys.stdout if name == 'stdout' else sys.stderr
+        stream.write(text)
+        stream.flush()
 
 
 def ros2_magic(line):

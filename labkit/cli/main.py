@@ -108,16 +108,13 @@ def _stop_everything():
 def ros2_main(argv):
     from labkit.cli.ros2 import run_command
     result = run_command(list(argv))
-    job = getattr(result, 'wait', None)
-    if job is not None and getattr(result, 'returncode', 0) is None:
+    if getattr(result, 'wait', None) is not None and result.returncode is None:
         # a long-running verb: follow it until Ctrl-C, like a terminal
         try:
             result.wait()
         except KeyboardInterrupt:
             result.stop()
         return 0
-    if result.stdout:
-        sys.stdout.write(result.stdout)
-    if result.stderr:
-        sys.stderr.write(result.stderr)
+    from labkit.cli.magics import emit
+    emit(result)
     return result.returncode or 0

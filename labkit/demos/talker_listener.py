@@ -1,4 +1,8 @@
-"""demo_nodes_cpp talker / listener: `std_msgs/String` on `chatter`, once a second."""
+"""demo_nodes_cpp (and demo_nodes_py) talker / listener: `std_msgs/String` on `chatter`, 1 Hz.
+
+The two packages print slightly differently: the C++ talker counts from 1 and
+quotes with '...', the Python one counts from 0 and quotes with "...".
+"""
 import labkit.rclpy as rclpy
 from labkit.interfaces import module
 from labkit.rclpy.executors import ExternalShutdownException
@@ -9,9 +13,10 @@ String = module('std_msgs.msg').String
 
 class Talker(Node):
 
-    def __init__(self):
+    def __init__(self, python_style=False):
         super().__init__('talker')
-        self.count = 1
+        self.python_style = python_style
+        self.count = 0 if python_style else 1
         self.pub = self.create_publisher(String, 'chatter', 10)
         self.timer = self.create_timer(1.0, self.on_timer)
 
@@ -19,7 +24,8 @@ class Talker(Node):
         msg = String()
         msg.data = f'Hello World: {self.count}'
         self.count += 1
-        self.get_logger().info(f"Publishing: '{msg.data}'")
+        quoted = f'"{msg.data}"' if self.python_style else f"'{msg.data}'"
+        self.get_logger().info(f'Publishing: {quoted}')
         self.pub.publish(msg)
 
 
@@ -33,9 +39,14 @@ class Listener(Node):
         self.get_logger().info(f'I heard: [{msg.data}]')
 
 
-def _run(node_class, args):
+def _is_python_package(args):
+    # `ros2 run` hands the executable's path first: .../lib/demo_nodes_py/talker
+    return bool(args) and '/demo_nodes_py/' in str(args[0])
+
+
+def _run(make_node, args):
     rclpy.init(args=args)
-    node = node_class()
+    node = make_node()
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
@@ -46,7 +57,7 @@ def _run(node_class, args):
 
 
 def talker_main(args=None):
-    _run(Talker, args)
+    _run(lambda: Talker(python_style=_is_python_package(args)), args)
 
 
 def listener_main(args=None):

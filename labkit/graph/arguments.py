@@ -116,7 +116,7 @@ def _parse_param_rule(rule):
         node = m.group(1)
         text = text[m.end():]
     if ":=" not in text:
-        raise ArgumentError("Expected lexeme type (19) not found, search ended at index "
+        raise ArgumentError("Expected lexeme type (22) not found, search ended at index "
                             f"{len(rule)}")
     name, value = text.split(":=", 1)
     if not name:

@@ -74,13 +74,15 @@ class Graph:
                 pass
         world.notify()
 
-    def _gid(self):
+    def _gid(self, pid=0, kind=0):
+        # Fast DDS layout: vendor 01.0f, host, pid, entity id + kind; Humble pads to 24 bytes
         n = next(self._gids)
-        return bytes([1, 15]) + n.to_bytes(8, "big") + bytes(14)   # 24 bytes, like Humble
+        return (bytes([1, 15, 0x4c, 0x59]) + (pid & 0xFFFFFFFF).to_bytes(4, "little") +
+                bytes([1, 0, 0, 0]) + n.to_bytes(3, "big") + bytes([kind]) + bytes(8))
 
     def add_node(self, info):
         with self.lock:
-            info.gid = self._gid()
+            info.gid = self._gid(getattr(info.process, "pid", 0), 0xC1)
             self.nodes.append(info)
             self._changed()
         return info
@@ -98,7 +100,8 @@ class Graph:
     def add(self, ep):
         """Register an endpoint; returns it (publishers get their matched list)."""
         with self.lock:
-            ep.gid = self._gid()
+            kind = {PUB: 0x03, SUB: 0x04, SRV: 0x04, CLI: 0x03}[ep.kind]
+            ep.gid = self._gid(getattr(ep.node.process, "pid", 0), kind)
             self.endpoints[ep.kind].setdefault(ep.name, []).append(ep)
             if ep.kind in (PUB, SUB):
                 self._rematch(ep.name, new=ep)

@@ -62,36 +62,43 @@ def _to_ns(seconds):
 # ---------------------------------------------------------------- live waits
 _cond = threading.Condition()
 _live_waiters = 0
+_generation = 0                # bumped by notify(); waiters sleep only if it did not move
+_started = set()               # live mode: idents of threads that reached a wait point
 
 
 def notify():
     """Something changed (a message arrived, a future finished...): wake waiters."""
+    global _generation
     if _live_waiters:
         with _cond:
+            _generation += 1
             _cond.notify_all()
 
 
-_started = set()               # live mode: idents of threads that reached a wait point
-
-
 def _live_wait(predicate, timeout_ns):
+    # Predicates run without holding _cond, so they may take any other lock.
     global _live_waiters
     _started.add(threading.get_ident())
     end = None if timeout_ns is None else _time.monotonic_ns() + timeout_ns
     with _cond:
         _live_waiters += 1
-        try:
-            while True:
-                if predicate():
-                    return True
-                if end is None:
-                    _cond.wait(0.5)      # bounded, in case a notify was missed
-                    continue
-                left = end - _time.monotonic_ns()
+    try:
+        while True:
+            gen = _generation
+            if predicate():
+                return True
+            if end is None:
+                left = 0.5               # bounded, in case something changed silently
+            else:
+                left = (end - _time.monotonic_ns()) / 1e9
                 if left <= 0:
                     return bool(predicate())
-                _cond.wait(min(left / 1e9, 0.5))
-        finally:
+                left = min(left, 0.5)
+            with _cond:
+                if _generation == gen:
+                    _cond.wait(left)
+    finally:
+        with _cond:
             _live_waiters -= 1
 
 
@@ -272,6 +279,7 @@ def sleep(seconds):
     if mode() == "virtual":
         _virtual_wait(lambda: False, max(0, _to_ns(seconds)))
     else:
+        _started.add(threading.get_ident())
         if seconds > 0:
             _time.sleep(seconds)
 
@@ -352,13 +360,21 @@ def join(thread, timeout_s=None):
     return not thread.is_alive()
 
 
-def _reset_clock_for_tests():
+def restart_clock():
+    """Virtual time back to the epoch (labkit.reset(); only once nothing else runs)."""
     global _now
-    _now = 0
+    if mode() != "virtual":
+        return
+    others = [r for r in _threads if r.state not in (DONE,) and r.thread is not
+              threading.current_thread() and r.thread.is_alive()]
+    waiting_with_deadline = [r for r in others if r.deadline is not None]
+    if not waiting_with_deadline:
+        _now = 0
 
 
 def thread_exit():
     """The calling thread ends: leave the world (hand the baton on if holding it)."""
+    _started.discard(threading.get_ident())
     rec = _by_ident.get(threading.get_ident())
     if rec is None:
         return

@@ -74,18 +74,26 @@ def spin_once(node, *, executor=None, timeout_sec=None):
     """Execute one item of work or wait until a timeout expires."""
     if executor is None:
         executor = _process.current().rclpy.global_executor or get_global_executor()
-    if getattr(executor, '_transient', 0) is node:
+    transient = getattr(executor, '_transient', _NOT_OURS)
+    if transient is _NOT_OURS:             # a foreign executor: exactly rclpy's steps
+        try:
+            executor.add_node(node)
+            executor.spin_once(timeout_sec=timeout_sec)
+        finally:
+            executor.remove_node(node)
+        return
+    if transient is node:
         executor._transient = None          # still attached from the previous call
     else:
         executor.add_node(node)
     try:
         executor.spin_once(timeout_sec=timeout_sec)
     finally:
-        if hasattr(executor, '_transient'):
-            if node in executor._nodes:
-                executor._transient = node  # removed lazily (see Executor._transient)
-        else:
-            executor.remove_node(node)
+        # removed lazily (see Executor._transient): same to observe, much cheaper
+        executor._transient = node if node in executor._nodes else None
+
+
+_NOT_OURS = object()
 
 
 def spin(node, executor=None):

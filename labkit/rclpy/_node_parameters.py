@@ -6,6 +6,7 @@ Attribute names (``_parameters``, ``_descriptors``, ``_parameter_overrides``,
 ``_parameters_callbacks``) are rclpy's: tools and user code peek at them.
 """
 import math
+import sys
 import warnings
 
 from labkit.rclpy._parameter_exceptions import (
@@ -27,9 +28,19 @@ def _validate_parameter_name(name):
 
 
 class ParameterMixin:
-    """declare/get/set/describe parameters; callbacks; /parameter_events."""
+    """declare/get/set/describe parameters; callbacks; /parameter_events.
+
+    A node that is written in C++ in real ROS 2 (turtlesim, demo_nodes_cpp...)
+    sets the class attribute ``_labkit_parameter_dialect = 'rclcpp'``: its
+    refusals then carry rclcpp's texts, which is what `ros2 param set/load`
+    print for such nodes.
+    """
 
     PARAM_REL_TOL = 1e-6
+    _labkit_parameter_dialect = 'rclpy'
+
+    def _speaks_rclcpp(self):
+        return self._labkit_parameter_dialect == 'rclcpp'
 
     # ----------------------------------------------------------------- setup
     def _init_parameters(self, parameter_overrides=None, allow_undeclared_parameters=False,
@@ -196,8 +207,10 @@ class ParameterMixin:
     def list_parameters(self, prefixes, depth):
         """ListParametersResult for ``prefixes`` and ``depth`` (0 = recursive)."""
         # Same answer the list_parameters service gives.
-        from labkit.rclpy.parameter_service import list_parameters_result
-        return list_parameters_result(self._parameters.keys(), prefixes, depth)
+        from labkit.rclpy import parameter_service as service
+        lister = (service.rclcpp_list_parameters_result if self._speaks_rclcpp()
+                  else service.list_parameters_result)
+        return lister(list(self._parameters.keys()), list(prefixes), depth)
 
     # ------------------------------------------------------------------- set
     def set_parameters(self, parameter_list):
@@ -306,16 +319,26 @@ class ParameterMixin:
             descriptor = self.describe_parameter(parameter.name)
         else:
             descriptor.name = parameter.name
+        rclcpp = self._speaks_rclcpp()
         if check_read_only and descriptor.read_only:
+            if rclcpp:
+                return _result(False, f"parameter '{parameter.name}' cannot be set because "
+                                      'it is read-only')
             return _result(False, f'Trying to set a read-only parameter: {parameter.name}.')
         if descriptor.dynamic_typing:
             descriptor.type = parameter.type_.value
         elif self.has_parameter(parameter.name) and parameter.type_ == Parameter.Type.NOT_SET:
+            if rclcpp:
+                return _result(False, _rclcpp_type_reason(parameter, descriptor))
             return _result(False, 'Static parameter cannot be undeclared')
         elif (parameter.type_ != Parameter.Type.NOT_SET and
               parameter.type_.value != descriptor.type):
+            if rclcpp:
+                return _result(False, _rclcpp_type_reason(parameter, descriptor))
             return _result(False, 'Wrong parameter type, expected '
                                   f"'{Parameter.Type(descriptor.type)}' got '{parameter.type_}'")
+        if rclcpp:
+            return _rclcpp_range_check(parameter, descriptor)
         if parameter.type_ == Parameter.Type.INTEGER and descriptor.integer_range:
             return self._apply_integer_range(parameter, descriptor.integer_range[0])
         if parameter.type_ == Parameter.Type.DOUBLE and descriptor.floating_point_range:
@@ -396,6 +419,44 @@ class ParameterMixin:
                 raise InvalidParameterValueException(name, alternative.value, result.reason)
         self._descriptors[name] = descriptor
         return self.get_parameter(name).get_parameter_value()
+
+
+# rclcpp::to_string(ParameterType), indexed by ParameterType.
+_RCLCPP_TYPE_NAMES = ('not set', 'bool', 'integer', 'double', 'string', 'byte_array',
+                      'bool_array', 'integer_array', 'double_array', 'string_array')
+
+
+def _rclcpp_type_reason(parameter, descriptor):
+    return (f'Wrong parameter type, parameter {{{parameter.name}}} is of type '
+            f'{{{_RCLCPP_TYPE_NAMES[descriptor.type]}}}, setting it to '
+            f'{{{_RCLCPP_TYPE_NAMES[parameter.type_.value]}}} is not allowed.')
+
+
+def _doubles_equal(x, y, ulp=100):
+    # rclcpp's __are_doubles_equal
+    return abs(x - y) <= sys.float_info.epsilon * abs(x + y) * ulp
+
+
+def _rclcpp_range_check(parameter, descriptor):
+    """rclcpp's range rules: from/to taken as given, one reason text per kind."""
+    name, v = parameter.name, parameter.value
+    if parameter.type_ == Parameter.Type.INTEGER and descriptor.integer_range:
+        r = descriptor.integer_range[0]
+        if v in (r.from_value, r.to_value) or (
+                r.from_value <= v <= r.to_value and
+                (r.step == 0 or (v - r.from_value) % r.step == 0)):
+            return _result(True)
+        return _result(False, f"Parameter {{{name}}} doesn't comply with integer range.")
+    if parameter.type_ == Parameter.Type.DOUBLE and descriptor.floating_point_range:
+        r = descriptor.floating_point_range[0]
+        if _doubles_equal(v, r.from_value) or _doubles_equal(v, r.to_value):
+            return _result(True)
+        if r.from_value <= v <= r.to_value:
+            if r.step == 0.0 or _doubles_equal(
+                    v, r.from_value + math.floor((v - r.from_value) / r.step + 0.5) * r.step):
+                return _result(True)
+        return _result(False, f"Parameter {{{name}}} doesn't comply with floating point range.")
+    return _result(True)
 
 
 def _builtin_time():

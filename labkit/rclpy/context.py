@@ -43,6 +43,8 @@ class Context:
             try:
                 parsed = _arguments.parse(argv)
             except _arguments.ArgumentError as exc:
+                from labkit.rclpy.logging import get_logger
+                get_logger('rcl').error('Failed to parse global arguments')
                 raise RCLError(f'failed to initialize rcl: {exc}') from None
             if parsed.unparsed_ros_args:
                 raise UnknownROSArgsError(repr([argv[i] for i in parsed.unparsed_ros_args]))
@@ -73,15 +75,16 @@ class Context:
         cfg.rosout_logs = parsed.rosout_logs
 
     def ok(self):
-        with self._lock:
-            return self.__context is not None and self._ok
+        # lock-free: executors evaluate this inside wait predicates
+        return self._ok
 
     def _call_on_shutdown_callbacks(self):
-        for cb in self._callbacks:
+        # called without self._lock held: callbacks wake executors (world locks)
+        callbacks, self._callbacks = self._callbacks, []
+        for cb in callbacks:
             callback = cb() if isinstance(cb, weakref.WeakMethod) else cb
             if callback is not None:
                 callback()
-        self._callbacks = []
 
     def shutdown(self):
         if self.__context is None:
@@ -92,16 +95,16 @@ class Context:
                 raise RCLError('failed to shutdown: rcl_shutdown already called on the given '
                                'context')
             self._ok = False
-            self._call_on_shutdown_callbacks()
+        self._call_on_shutdown_callbacks()
         world.notify()
 
     def try_shutdown(self):
         if self.__context is None:
             return
         with self._lock:
-            if self._ok:
-                self._ok = False
-                self._call_on_shutdown_callbacks()
+            was_ok, self._ok = self._ok, False
+        if was_ok:
+            self._call_on_shutdown_callbacks()
         world.notify()
 
     def _remove_callback(self, weak_method):
@@ -117,12 +120,14 @@ class Context:
             from labkit.rclpy.exceptions import InvalidHandle
             raise InvalidHandle('cannot use Destroyable because destruction was requested')
         with self._lock:
-            if not self._ok:
-                callback()
-            elif ismethod(callback):
-                self._callbacks.append(weakref.WeakMethod(callback, self._remove_callback))
-            else:
-                self._callbacks.append(callback)
+            run_now = not self._ok
+            if not run_now:
+                if ismethod(callback):
+                    self._callbacks.append(weakref.WeakMethod(callback, self._remove_callback))
+                else:
+                    self._callbacks.append(callback)
+        if run_now:
+            callback()
 
     def get_domain_id(self):
         if self.__context is None:

@@ -146,7 +146,8 @@ class Node(ParameterMixin):
         self._logger_name = _logger_name(namespace, node_name)
         self._logger = get_logger(self._logger_name)
 
-        if enable_rosout:
+        from labkit.rclpy.impl import rcutils_logger
+        if enable_rosout and rcutils_logger._config().rosout_logs:
             self._init_rosout()
         self._parameter_event_publisher = self.create_publisher(
             msg_class('rcl_interfaces/msg/ParameterEvent'), '/parameter_events',
@@ -307,7 +308,11 @@ class Node(ParameterMixin):
 
     def _resolve(self, name, only_expand, is_service):
         """Expand, validate and remap a topic/service name like rcl_node_resolve_name."""
-        self._validate_topic_or_service_name(name, is_service=is_service)
+        try:
+            self._validate_topic_or_service_name(name, is_service=is_service)
+        except _names.ExpansionError as exc:
+            kind = 'service' if is_service else 'topic'
+            raise ValueError(f"{kind} name '{name}' is invalid: {exc}") from None
         expanded = _names.expand_topic_name(name, self._info.name, self._info.namespace)
         if only_expand:
             return expanded
@@ -367,9 +372,19 @@ class Node(ParameterMixin):
 
     def _incompatible_warning(self, entity, is_publisher):
         logger = self._logger
+        counts = [0]
 
-        def warn(other, policy_kind):
+        def event(other, policy_kind):
             from labkit.rclpy.qos import QoSPolicyKind
+            from labkit.rclpy.qos_event import QoSIncompatibleQoSInfo
+            counts[0] += 1
+            callbacks = entity.event_callbacks
+            user = getattr(callbacks, 'incompatible_qos', None)
+            if user is not None:
+                user(QoSIncompatibleQoSInfo(counts[0], 1, QoSPolicyKind(policy_kind or 1)))
+                return
+            if callbacks is not None and not getattr(callbacks, 'use_default_callbacks', True):
+                return
             policy = QoSPolicyKind(policy_kind).name + '_QOS_POLICY' if policy_kind else 'INVALID'
             if is_publisher:
                 logger.warning(
@@ -381,7 +396,7 @@ class Node(ParameterMixin):
                     f"New publisher discovered on topic '{entity.topic_name}', offering "
                     "incompatible QoS. No messages will be received from it. Last incompatible "
                     f"policy: {policy}")
-        return warn
+        return event
 
     def create_subscription(self, msg_type, topic, callback, qos_profile, *, callback_group=None,
                             event_callbacks=None, qos_overriding_options=None, raw=False):

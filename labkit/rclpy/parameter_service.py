@@ -48,6 +48,36 @@ def list_parameters_result(names, prefixes, depth):
     return result
 
 
+def rclcpp_list_parameters_result(names, prefixes, depth):
+    """ListParametersResult as rclcpp answers it (C++ nodes): sorted names, a prefix
+    matches itself or ``prefix.``, depth counts the dots after the prefix."""
+    result = _rcl('msg/ListParametersResult')()
+    out_names, out_prefixes = [], []
+    sep = PARAMETER_SEPARATOR_STRING
+
+    def shallow(text):
+        return depth == DEPTH_RECURSIVE or text.count(sep) < depth
+
+    for name in sorted(names):  # rclcpp keeps parameters in a std::map
+        get_all = not prefixes and shallow(name)
+        matches = any(name == prefix or (name.startswith(prefix + sep) and
+                                         shallow(name[len(prefix):]))
+                      for prefix in prefixes)
+        if get_all or matches:
+            out_names.append(name)
+            if sep in name:
+                parent = name.rsplit(sep, 1)[0]
+                if parent not in out_prefixes:
+                    out_prefixes.append(parent)
+    result.names = out_names
+    result.prefixes = out_prefixes
+    return result
+
+
+def _speaks_rclcpp(node):
+    return getattr(node, '_labkit_parameter_dialect', 'rclpy') == 'rclcpp'
+
+
 class ParameterService:
     """Creates describe/get/get_types/list/set/set_atomically services on a node."""
 
@@ -103,7 +133,8 @@ class ParameterService:
 
     def _list_parameters_callback(self, request, response):
         node = self._get_node()
-        response.result = list_parameters_result(
+        lister = rclcpp_list_parameters_result if _speaks_rclcpp(node) else list_parameters_result
+        response.result = lister(
             list(node._parameters.keys()), list(request.prefixes), request.depth)
         return response
 
@@ -114,7 +145,9 @@ class ParameterService:
             try:
                 results.append(node.set_parameters_atomically([Parameter.from_parameter_msg(p)]))
             except ParameterNotDeclaredException as e:
-                results.append(_rcl('msg/SetParametersResult')(successful=False, reason=str(e)))
+                reason = (f"parameter '{p.name}' cannot be set because it was not declared"
+                          if _speaks_rclcpp(node) else str(e))
+                results.append(_rcl('msg/SetParametersResult')(successful=False, reason=reason))
         response.results = results
         return response
 
@@ -124,5 +157,7 @@ class ParameterService:
             response.result = node.set_parameters_atomically(
                 [Parameter.from_parameter_msg(p) for p in request.parameters])
         except ParameterNotDeclaredException as e:
-            response.result = _rcl('msg/SetParametersResult')(successful=False, reason=str(e))
+            reason = ('One or more parameters were not declared before setting'
+                      if _speaks_rclcpp(node) else str(e))
+            response.result = _rcl('msg/SetParametersResult')(successful=False, reason=reason)
         return response

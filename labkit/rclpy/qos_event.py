@@ -15,6 +15,23 @@ class QoSSubscriptionEventType(IntEnum):
     RCL_SUBSCRIPTION_MESSAGE_LOST = 3
 
 
+class QoSIncompatibleQoSInfo:
+    """rmw_{offered,requested}_qos_incompatible_event_status_t."""
+
+    def __init__(self, total_count, total_count_change, last_policy_kind):
+        self.total_count = total_count
+        self.total_count_change = total_count_change
+        self.last_policy_kind = last_policy_kind
+
+    def __repr__(self):
+        return (f'QoSIncompatibleQoSInfo(total_count={self.total_count}, total_count_change='
+                f'{self.total_count_change}, last_policy_kind={self.last_policy_kind!r})')
+
+
+QoSOfferedIncompatibleQoSInfo = QoSIncompatibleQoSInfo
+QoSRequestedIncompatibleQoSInfo = QoSIncompatibleQoSInfo
+
+
 class SubscriptionEventCallbacks:
     def __init__(self, *, deadline=None, incompatible_qos=None, liveliness=None,
                  message_lost=None, use_default_callbacks=True):

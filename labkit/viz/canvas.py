@@ -49,10 +49,17 @@ def render(world):
     return compose(background, turtles, pixels)
 
 
+class PNG(bytes):
+    """PNG file bytes that a notebook displays as the picture."""
+
+    def _repr_png_(self):
+        return bytes(self)
+
+
 def png_bytes(image):
     buf = io.BytesIO()
     image.save(buf, format="PNG")
-    return buf.getvalue()
+    return PNG(buf.getvalue())
 
 
 def _find_world(source=None):
@@ -96,6 +103,16 @@ class TurtleCanvas:
         self._follow_restart()
         return render(self.world)
 
+    def snapshot(self):
+        """The current picture as PNG bytes (500x500, like the real window); shows as an image."""
+        return png_bytes(self.image())
+
+    def replay(self, seconds=5.0, fps=15, format="gif", scale=1.0):
+        """An animated picture (GIF or WebP) of the last `seconds` of simulation."""
+        from labkit.viz.replay import replay
+        self._follow_restart()
+        return replay(self.world, seconds=seconds, fps=fps, format=format, scale=scale)
+
     def _follow_restart(self):
         """If attached to 'the running turtlesim' and a newer one started, switch to it."""
         if not self._newest:
@@ -113,18 +130,8 @@ class TurtleCanvas:
             self._wake.set()
         return True
 
-    def snapshot(self):
-        """The current picture as PNG bytes (500x500, like the real window)."""
-        return png_bytes(self.image())
-
-    def replay(self, seconds=5.0, fps=15, format="gif", scale=1.0):
-        """An animated picture (GIF or WebP) of the last `seconds` of simulation."""
-        from labkit.viz.replay import replay
-        self._follow_restart()
-        return replay(self.world, seconds=seconds, fps=fps, format=format, scale=scale)
-
     def _repr_png_(self):
-        return self.snapshot()
+        return bytes(self.snapshot())
 
     def _ipython_display_(self):
         from labkit.viz.display import show

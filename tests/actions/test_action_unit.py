@@ -105,3 +105,14 @@ def test_graph_names_from_feedback_topics():
     assert graph.get_action_server_names_and_types_by_node(node, 'server', '/') == expected
     assert graph.get_action_server_names_and_types_by_node(node, 'client', '/') == []
     assert graph.get_action_client_names_and_types_by_node(node, 'client', '/') == expected
+
+
+def test_virtual_goal_ids_are_reproducible_uuid4():
+    import uuid
+    from labkit.rclpy.action import _common
+    _common.reset_virtual_uuids()
+    first = [_common.new_goal_uuid_bytes() for _ in range(3)]
+    _common.reset_virtual_uuids()
+    assert [_common.new_goal_uuid_bytes() for _ in range(3)] == first
+    assert len(set(first)) == 3
+    assert all(uuid.UUID(bytes=b).version == 4 for b in first)

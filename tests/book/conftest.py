@@ -4,6 +4,7 @@ served on 127.0.0.1 and opened in headless Chromium."""
 
 from __future__ import annotations
 
+import concurrent.futures
 import functools
 import http.server
 import shutil
@@ -20,29 +21,10 @@ sys.path.insert(0, str(ROOT / "tools"))
 import book_build  # noqa: E402
 
 
-def _build(book: Path, out: Path) -> Path:
-    try:
-        # jupyter-book runs without any network where the machine allows it.
-        return book_build.build(book, out, without_network=True)
-    except SystemExit as exc:  # no npm to fetch the browser files
-        missing(str(exc))
-    except subprocess.CalledProcessError as exc:
-        pytest.fail(f"book build failed: {exc}", pytrace=False)
-
-
-@pytest.fixture(scope="session")
-def book_html(tmp_path_factory) -> Path:
-    """The real book, built offline into a temporary folder."""
-    # A private output folder: other people may build book/_build meanwhile.
-    return _build(BOOK, tmp_path_factory.mktemp("book"))
-
-
-@pytest.fixture(scope="session")
-def widget_book_html(tmp_path_factory) -> Path:
+def _scratch_book(base: Path) -> Path:
     """A scratch book with the real _config.yml and one executed notebook
     with saved widget state (ipywidgets, ipycanvas, ipyevents), a two-faced
     output and math."""
-    base = tmp_path_factory.mktemp("widget_book")
     book = base / "book"
     book.mkdir()
     shutil.copy(BOOK / "_config.yml", book)
@@ -55,7 +37,40 @@ def widget_book_html(tmp_path_factory) -> Path:
     shutil.copy(FIXTURES / "widget_page.ipynb.json", book / "part1_basics" / "widget_page.ipynb")
     (book / "_toc.yml").write_text("format: jb-book\nroot: part1_basics/widget_page\n",
                                    encoding="utf-8")
-    return _build(book, base / "out")
+    return book
+
+
+@pytest.fixture(scope="session")
+def _builds(tmp_path_factory) -> dict[str, Path]:
+    """Both builds, side by side (each is its own jupyter-book process).
+    Private output folders: other people may build book/_build meanwhile."""
+    try:
+        book_build.ensure_node_modules()  # once, before the parallel builds
+    except SystemExit as exc:  # no npm to fetch the browser files
+        missing(str(exc))
+    scratch_base = tmp_path_factory.mktemp("widget_book")
+    jobs = {"book": (BOOK, tmp_path_factory.mktemp("book")),
+            "widgets": (_scratch_book(scratch_base), scratch_base / "out")}
+    with concurrent.futures.ThreadPoolExecutor(len(jobs)) as pool:
+        # jupyter-book runs without any network where the machine allows it.
+        futures = {name: pool.submit(book_build.build, book, out, without_network=True)
+                   for name, (book, out) in jobs.items()}
+        try:
+            return {name: f.result() for name, f in futures.items()}
+        except subprocess.CalledProcessError as exc:
+            pytest.fail(f"book build failed: {exc}", pytrace=False)
+
+
+@pytest.fixture(scope="session")
+def book_html(_builds) -> Path:
+    """The real book, built offline."""
+    return _builds["book"]
+
+
+@pytest.fixture(scope="session")
+def widget_book_html(_builds) -> Path:
+    """The scratch book holding the widget notebook, built offline."""
+    return _builds["widgets"]
 
 
 class _QuietHandler(http.server.SimpleHTTPRequestHandler):

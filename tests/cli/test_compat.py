@@ -52,7 +52,8 @@ def test_rosidl_runtime_py_stand_ins(hook):
     set_message_fields(twist, {'linear': {'x': 2.0}})
     assert message_to_yaml(twist).startswith('linear:\n  x: 2.0\n')
     assert get_service('turtlesim/srv/Spawn').Request
-    with pytest.raises(ValueError, match="Expected the full name of a message, got 'turtlesim/srv/Spawn'"):
+    with pytest.raises(ValueError,
+                       match="Expected the full name of a message, got 'turtlesim/srv/Spawn'"):
         get_message('turtlesim/srv/Spawn')
 
 

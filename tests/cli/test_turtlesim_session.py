@@ -113,3 +113,16 @@ def test_the_cli_works_in_live_time_too():
     assert lines[0] == '/talker'
     assert lines[1].startswith("data: 'Hello World: ") and lines[2] == '---'
     assert lines[3] == ''
+
+
+def test_param_load_output_keeps_the_terminal_order(turtlesim, tmp_path):
+    labkit.ros2('run turtlesim turtle_teleop_key')
+    path = tmp_path / 'turtlesim.yaml'
+    path.write_text(ok('param dump /turtlesim'))
+    r = run_command(f'param load /turtlesim {path}')
+    lines = repr(r).splitlines()
+    assert lines[:3] == [f'Set parameter background_{c} successful' for c in 'bgr']
+    assert all(line.startswith('Set parameter qos_overrides./parameter_events.publisher.')
+               and ' failed: ' in line for line in lines[3:7])
+    assert lines[7] == 'Set parameter use_sim_time successful'
+    assert r.stderr.count('\n') == 4 and r.stdout.count('\n') == 4

@@ -95,9 +95,11 @@ def test_reset_clears_everything(virtual):
     from labkit.rclpy.node import Node
     Node('mine')
     assert len(GRAPH.nodes) == 3
+    labkit.sleep(1.0)
     labkit.reset()
     assert GRAPH.nodes == []
     assert process.processes() == []
+    assert virtual.steady_ns() == 0        # virtual time starts over
     assert not rclpy.ok()
     rclpy.init()            # the main process can start over
     assert rclpy.ok()

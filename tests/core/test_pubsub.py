@@ -214,3 +214,18 @@ def test_type_checks_and_serialization(rclpy, msgs):
     assert deserialize_message(data, msgs.String).data == 'hello'
     ok, msg = wait_for_message(msgs.String, node, 'nothing', time_to_wait=0.5)
     assert (ok, msg) == (False, None)
+
+
+def test_incompatible_qos_event_callback(rclpy, msgs, capfd):
+    from labkit.rclpy.node import Node
+    from labkit.rclpy.qos import QoSPolicyKind
+    from labkit.rclpy.qos_event import SubscriptionEventCallbacks
+    node = Node('n')
+    events = []
+    node.create_subscription(msgs.Int32, 'x', lambda m: None, 10, event_callbacks=(
+        SubscriptionEventCallbacks(incompatible_qos=events.append)))
+    node.create_publisher(msgs.Int32, 'x', qos_profile_sensor_data)
+    assert len(events) == 1 and events[0].last_policy_kind == QoSPolicyKind.RELIABILITY
+    err = capfd.readouterr().err
+    assert 'offering incompatible QoS' not in err
+    assert 'requesting incompatible QoS' in err

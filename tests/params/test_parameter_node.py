@@ -89,7 +89,8 @@ def test_get_list_describe_set_through_services(graph):
     r = _call(client, ex, 'SetParameters', '/sim/turtle/set_parameters',
               parameters=[new, bad, ro, nope])
     assert [x.successful for x in r.results] == [True, False, False, False]
-    assert r.results[1].reason == 'Parameter background_r out of range. Min: 0, Max: 255, value: 300'
+    assert r.results[1].reason == (
+        'Parameter background_r out of range. Min: 0, Max: 255, value: 300')
     assert r.results[2].reason == 'Trying to set a read-only parameter: name.'
     assert r.results[3].reason == "('Invalid access to undeclared parameter(s)', [])"
     assert server.get_parameter('background_r').value == 200
@@ -130,3 +131,34 @@ def test_ros_args_overrides_and_explicit_overrides():
         auto.destroy_node()
     finally:
         rclpy.shutdown()
+
+
+def test_cpp_node_answers_with_rclcpp_texts(graph):
+    """`ros2 param load /turtlesim` in the seed shows rclcpp's read-only text."""
+    _, client, ex = graph
+    from labkit.rclpy.node import Node
+
+    class CppNode(Node):
+        _labkit_parameter_dialect = 'rclcpp'
+
+    node = CppNode('turtlesim')
+    ex.add_node(node)
+    node.declare_parameter('qos_overrides./parameter_events.publisher.depth', 1000,
+                           ParameterDescriptor(read_only=True))
+    node.declare_parameter('background_g', 86)
+    r = _call(client, ex, 'SetParameters', '/turtlesim/set_parameters', parameters=[
+        Parameter('background_g', value=150).to_parameter_msg(),
+        Parameter('qos_overrides./parameter_events.publisher.depth', value=1000).to_parameter_msg(),
+        Parameter('nope', value=1).to_parameter_msg()])
+    assert [(x.successful, x.reason) for x in r.results] == [
+        (True, ''),
+        (False, "parameter 'qos_overrides./parameter_events.publisher.depth' cannot be set "
+                'because it is read-only'),
+        (False, "parameter 'nope' cannot be set because it was not declared")]
+    r = _call(client, ex, 'SetParametersAtomically', '/turtlesim/set_parameters_atomically',
+              parameters=[Parameter('nope', value=1).to_parameter_msg()])
+    assert r.result.reason == 'One or more parameters were not declared before setting'
+    r = _call(client, ex, 'ListParameters', '/turtlesim/list_parameters')
+    assert r.result.names == ['background_g', 'qos_overrides./parameter_events.publisher.depth',
+                              'use_sim_time']
+    node.destroy_node()

@@ -345,3 +345,50 @@ def test_list_parameters_depth_and_prefixes():
     assert r.names == ['b.c', 'b.d.e'] and r.prefixes == ['b', 'b.d']
     r = node.list_parameters(['a'], 0)
     assert r.names == ['a', 'ab']
+
+
+# ------------------------------------------------ nodes that are C++ in real ROS
+class CppNode(FakeNode):
+    _labkit_parameter_dialect = 'rclcpp'
+
+
+def test_rclcpp_dialect_reasons():
+    node = CppNode()
+    node.declare_parameter('background_r', 69, ParameterDescriptor(
+        integer_range=[IntegerRange(from_value=0, to_value=255, step=1)]))
+    node.declare_parameter('qos_overrides./parameter_events.publisher.depth', 1000,
+                           ParameterDescriptor(read_only=True))
+    node.declare_parameter('gain', 0.5, ParameterDescriptor(floating_point_range=[
+        FloatingPointRange(from_value=0.0, to_value=1.0, step=0.25)]))
+    reasons = [r.reason for r in node.set_parameters([
+        Parameter('background_r', value=300),
+        Parameter('background_r', value='red'),
+        Parameter('background_r'),
+        Parameter('qos_overrides./parameter_events.publisher.depth', value=5),
+        Parameter('gain', value=0.3),
+        Parameter('gain', value=0.75),
+    ])]
+    assert reasons == [
+        "Parameter {background_r} doesn't comply with integer range.",
+        'Wrong parameter type, parameter {background_r} is of type {integer}, '
+        'setting it to {string} is not allowed.',
+        'Wrong parameter type, parameter {background_r} is of type {integer}, '
+        'setting it to {not set} is not allowed.',
+        "parameter 'qos_overrides./parameter_events.publisher.depth' cannot be set "
+        'because it is read-only',
+        "Parameter {gain} doesn't comply with floating point range.",
+        '',
+    ]
+
+
+def test_rclcpp_dialect_list_is_sorted_and_prefix_exact():
+    node = CppNode()
+    node.declare_parameters('', [('b.c', 2), ('a', 1), ('ab', 4), ('b.d.e', 3)])
+    r = node.list_parameters([], 0)
+    assert r.names == ['a', 'ab', 'b.c', 'b.d.e'] and r.prefixes == ['b', 'b.d']
+    assert node.list_parameters([], 1).names == ['a', 'ab']
+    assert node.list_parameters(['a'], 0).names == ['a']
+    # depth counts the dots after the prefix, its own separator included
+    assert node.list_parameters(['b'], 1).names == []
+    r = node.list_parameters(['b'], 2)
+    assert r.names == ['b.c'] and r.prefixes == ['b']

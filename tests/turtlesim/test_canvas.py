@@ -28,6 +28,7 @@ def test_snapshot_is_a_500x500_png_showing_background_trail_and_turtle():
     w = driven_world()
     png = TurtleCanvas(w).snapshot()
     assert png[:8] == b"\x89PNG\r\n\x1a\n"
+    assert png._repr_png_() == bytes(png)           # shows as a picture in a notebook
     img = np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))
     assert img.shape == (500, 500, 3)
     assert tuple(img[2, 2]) == P.DEFAULT_BACKGROUND

@@ -4,6 +4,13 @@ One module per noun (node, topic, service, action, interface, param, pkg, run),
 one function per verb, written like ros2cli's verbs on the rclpy API. Short
 verbs return a `CompletedCommand`; verbs that keep running (run, echo, hz, ...)
 start a background job and return its `Job` at once (see jobs.py).
+
+Adding a noun (later layers: bag, launch, doctor, ...): a module with
+`add_arguments(parser, cli_name)` that calls `_base.add_verbs(parser, cli_name,
+[(verb, one-line doc, add_arguments(p), main(args, io)), ...])`, registered
+with `register_noun(name, 'module.path', doc)`. A verb prints through
+`io.print`/`io.eprint` and returns None, an exit code, or an error line; a
+parser default `_background=lambda args: bool` makes it a job when true.
 """
 import argparse
 import importlib
@@ -37,12 +44,15 @@ def register_noun(name, module, doc):
 class CompletedCommand:
     """What a finished `ros2` command left behind (like subprocess.CompletedProcess)."""
 
-    def __init__(self, args, returncode, stdout='', stderr='', exception=None):
+    def __init__(self, args, returncode, stdout='', stderr='', exception=None, chunks=None):
         self.args = args
         self.returncode = returncode
         self.stdout = stdout
         self.stderr = stderr
         self.exception = exception  # an unexpected internal error, kept for debugging
+        # [(stream name, text)] in the order printed, so a terminal-like view interleaves them
+        self.chunks = chunks if chunks is not None else \
+            [c for c in (('stdout', stdout), ('stderr', stderr)) if c[1]]
 
     def check_returncode(self):
         if self.returncode:
@@ -51,7 +61,7 @@ class CompletedCommand:
                 self.returncode, self.args, self.stdout, self.stderr)
 
     def text(self):
-        return self.stdout + self.stderr
+        return ''.join(text for _, text in self.chunks)
 
     def __str__(self):
         return self.text()
@@ -62,6 +72,20 @@ class CompletedCommand:
 
     def _repr_pretty_(self, p, cycle):
         p.text(self.__repr__())
+
+
+class _Recorder(io.StringIO):
+    """One output stream of a command, also noting each write in the shared order."""
+
+    def __init__(self, name, chunks):
+        super().__init__()
+        self.name = name
+        self.chunks = chunks
+
+    def write(self, text):
+        if text:
+            self.chunks.append((self.name, text))
+        return super().write(text)
 
 
 def split_command(command):
@@ -99,7 +123,7 @@ def build_parser(argv):
     return parser
 
 
-def run_command(command, *, capture=True):
+def run_command(command):
     """Run one ros2 command line; returns a CompletedCommand, or a Job for long-running verbs."""
     try:
         argv = split_command(command)
@@ -108,19 +132,20 @@ def run_command(command, *, capture=True):
     if argv[:1] == ['jobs']:
         from labkit.cli.ros2 import jobs
         return jobs.jobs_command(argv)
-    out, err = io.StringIO(), io.StringIO()
+    chunks = []
+    out, err = _Recorder('stdout', chunks), _Recorder('stderr', chunks)
     streams = Streams(out, err)
     _base._streams = streams
     try:
         parser = build_parser(argv)
         args = parser.parse_args(argv)
     except ParserExit as e:
-        return CompletedCommand(argv, e.status, out.getvalue(), err.getvalue())
+        return CompletedCommand(argv, e.status, out.getvalue(), err.getvalue(), None, chunks)
     verb = getattr(args, '_verb', None)
     if verb is None:
         target = getattr(args, '_noun_parser', parser)
         target.print_help()
-        return CompletedCommand(argv, 0, out.getvalue(), err.getvalue())
+        return CompletedCommand(argv, 0, out.getvalue(), err.getvalue(), None, chunks)
     background = getattr(args, '_background', None)
     if background is not None and background(args):
         from labkit.cli.ros2 import jobs
@@ -133,7 +158,7 @@ def run_command(command, *, capture=True):
             return run.start_run_job(argv, args)
         return jobs.start_verb_job(argv, verb, args)
     rc, exc = call_verb(verb, args, streams)
-    return CompletedCommand(argv, rc, out.getvalue(), err.getvalue(), exc)
+    return CompletedCommand(argv, rc, out.getvalue(), err.getvalue(), exc, chunks)
 
 
 def call_verb(verb, args, streams):

@@ -44,6 +44,10 @@ _streams = None  # the Streams of the command being parsed (argparse prints thro
 class Parser(argparse.ArgumentParser):
     """argparse that prints into the command's streams and never calls sys.exit."""
 
+    def _get_formatter(self):
+        # a notebook has no terminal: help is laid out for 80 columns, the same every run
+        return self.formatter_class(prog=self.prog, width=78)
+
     def _print_message(self, message, file=None):
         if not message:
             return
@@ -161,9 +165,8 @@ class CliNode:
             rclpy.init(args=[], context=self.context)
         if name is None:
             name = f'{NODE_NAME_PREFIX}_{suffix or next(_counter)}'
-        self.node = rclpy.create_node(
-            name, context=self.context, start_parameter_services=False,
-            enable_rosout=False)
+        # like ros2cli's DirectNode: rosout on, no parameter services
+        self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
         self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         if not default_context:

@@ -27,11 +27,12 @@ class Job:
 
     @property
     def pid(self):
-        return getattr(self.process, 'pid', None)
+        return self.process.pid
 
     @property
     def output(self):
-        return list(getattr(self.process, 'output', []))
+        """The lines the job printed so far (stdout and stderr)."""
+        return list(self.process.output)
 
     @property
     def stdout(self):
@@ -40,12 +41,7 @@ class Job:
     stderr = ''
 
     def running(self):
-        p = self.process
-        for attr in ('is_alive', 'alive', 'running'):
-            value = getattr(p, attr, None)
-            if value is not None:
-                return bool(value() if callable(value) else value)
-        return getattr(p, 'returncode', None) is None and not self._stopped
+        return self.process.running
 
     @property
     def state(self):
@@ -57,8 +53,7 @@ class Job:
     def returncode(self):
         if self.running():
             return None
-        rc = getattr(self.process, 'returncode', None)
-        return 0 if rc is None else rc
+        return self.process.returncode or 0
 
     def check_returncode(self):
         if self.returncode:

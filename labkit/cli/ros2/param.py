@@ -7,7 +7,7 @@ import re
 import yaml
 
 from labkit.cli.ros2._base import (
-    CliError, CliNode, GaveUp, absolute_node_name, patience, add_verbs, is_hidden_name, node_names,
+    CliError, CliNode, GaveUp, absolute_node_name, add_verbs, node_names, patience,
     service_names_and_types, split_node_name)
 
 SEPARATOR = '.'

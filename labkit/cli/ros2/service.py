@@ -1,9 +1,7 @@
 """ros2 service list | type | find | call (ros2service)."""
-import time
-
 from labkit.cli.ros2._base import (
-    NODE_NAME_PREFIX, CliError, CliNode, GaveUp, patience, add_verbs, load_yaml_values, service_names_and_types,
-    set_message_fields)
+    NODE_NAME_PREFIX, CliError, CliNode, GaveUp, add_verbs, load_yaml_values, patience,
+    service_names_and_types, set_message_fields)
 
 
 def add_arguments(parser, cli_name):
