@@ -6,6 +6,7 @@ import io
 import itertools
 import sys
 import threading
+import time
 import traceback
 
 from labkit.graph import world
@@ -78,15 +79,16 @@ class Process:
         if self is MAIN:
             _clear_rclpy_state(self)
             return
-        # like SIGINT on a real rclpy process: contexts shut down, KeyboardInterrupt in main
+        # like SIGINT on a real rclpy process: KeyboardInterrupt in its main thread (at its
+        # next wait point) and every context shut down
+        if self.running:
+            self._sigint = True
         for ctx in list(self.rclpy.contexts):
             try:
                 ctx.try_shutdown()
             except Exception:
                 pass
-        if self.running:
-            self._sigint = True
-            world.notify()
+        world.notify()
         if self.thread is not None and self.thread is not threading.current_thread():
             world.join(self.thread, timeout_s)
         for thread in threading.enumerate():     # the other threads it started
@@ -145,23 +147,62 @@ _original_thread_start = threading.Thread.start
 
 
 def _thread_start(self):
-    if getattr(self, "_labkit_process", None) is None:
-        proc = current()
-        if proc is not MAIN:
-            self._labkit_process = proc
+    proc = current()
+    if getattr(self, "_labkit_process", None) is None and proc is not MAIN:
+        self._labkit_process = proc
+    enter = started = None
+    if world.mode() == "virtual" and not getattr(self, "_labkit_world", False) and (
+            proc is not MAIN or _spins_rclpy(self)):
+        # a thread a process starts (or one that spins rclpy) takes part in virtual time
+        # from its first line, so what it does is deterministic
+        enter, started = world.adopt(self)
     run = self.run
 
     def run_then_leave_world():
         # a thread that waited at a world wait point must hand the baton on when it ends
         try:
+            if enter is not None:
+                enter()
             run()
         finally:
             world.thread_exit()
     self.run = run_then_leave_world
-    return _original_thread_start(self)
+    if enter is not None:
+        # joining it is a wait point, or the joiner would hold the baton it needs
+        self.join = lambda timeout=None: world.join(self, timeout)
+    result = _original_thread_start(self)
+    if started is not None:
+        started()
+    return result
+
+
+def _spins_rclpy(thread):
+    target = getattr(thread, "_target", None)
+    module = getattr(target, "__module__", None) or ""
+    return module.startswith(("labkit.rclpy", "rclpy"))
 
 
 threading.Thread.start = _thread_start
+
+
+# In virtual time a process that calls time.sleep() must not hold the world still for
+# real seconds: it sleeps in virtual time (a wait point), and a stop interrupts it.
+_real_sleep = time.sleep
+
+
+def _process_sleep(seconds):
+    proc = current()
+    if proc is MAIN or world.mode() != "virtual":
+        return _real_sleep(seconds)
+    if seconds < 0:
+        raise ValueError("sleep length must be non-negative")
+    world.wait(lambda: proc._sigint, seconds)
+    if proc._sigint and threading.current_thread() is proc.thread:
+        proc._sigint = False
+        raise KeyboardInterrupt
+
+
+time.sleep = _process_sleep
 
 
 # ------------------------------------------------------------ output proxy
@@ -246,7 +287,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
         threading.current_thread()._labkit_process = proc
         code = 0
         try:
-            result = main(args=args)
+            result = main(args=args) if _takes_args(main) else main()
             if isinstance(result, int):
                 code = result
         except SystemExit as exc:
@@ -271,6 +312,22 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     proc.thread._labkit_process = proc
     _wait_first_wait_point(proc)
     return proc
+
+
+def _takes_args(main):
+    """console_scripts call main(); ROS templates define main(args=None)."""
+    import inspect
+    try:
+        params = inspect.signature(main).parameters
+    except (TypeError, ValueError):
+        return True
+    return "args" in params or any(p.kind == p.VAR_KEYWORD for p in params.values())
+
+
+def argv():
+    """What sys.argv is for the calling thread's process (its own argv in a process)."""
+    proc = current()
+    return proc.argv if proc is not MAIN else sys.argv
 
 
 def _wait_first_wait_point(proc):

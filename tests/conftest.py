@@ -14,3 +14,13 @@ def _labkit_clean_graph():
     # Only if the test touched the runtime: importing it here would slow pure tests.
     if "labkit.process" in sys.modules:
         sys.modules["labkit.process"].reset_all()
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_runtest_call(item):
+    # pytest swaps sys.stdout/stderr when a test's call phase starts, which drops
+    # labkit's per-process output proxy; put it back so Process.output keeps
+    # collecting what processes print during the test.
+    process = sys.modules.get("labkit.process")
+    if process is not None:
+        process.install_output_proxy()

@@ -311,7 +311,6 @@ def _node_matches(pattern, fqn):
         return False
     rx = "^"
     parts = pattern.split("/")
-    i = 0
     tokens = []
     for part in parts[1:]:
         if part == "**":

@@ -3,6 +3,8 @@
 Each validator returns None when the name is valid, else (error_msg, invalid_index),
 with the texts rmw/rcl use, so rclpy's exceptions can show them.
 """
+from functools import lru_cache
+
 TOPIC_MAX_NAME_LENGTH = 255 - 8
 NODE_NAME_MAX_LENGTH = 255
 NAMESPACE_MAX_LENGTH = TOPIC_MAX_NAME_LENGTH - 2
@@ -16,6 +18,7 @@ def _digit(c):
     return "0" <= c <= "9"
 
 
+@lru_cache(maxsize=4096)
 def validate_node_name(name):
     if not name:
         return "node name must not be empty", 0
@@ -29,6 +32,7 @@ def validate_node_name(name):
     return None
 
 
+@lru_cache(maxsize=4096)
 def validate_full_topic_name(name):
     n = len(name)
     if n == 0:
@@ -65,6 +69,7 @@ _NAMESPACE_TEXTS = {
 }
 
 
+@lru_cache(maxsize=4096)
 def validate_namespace(namespace):
     if namespace == "/":
         return None
@@ -76,6 +81,7 @@ def validate_namespace(namespace):
     return None
 
 
+@lru_cache(maxsize=4096)
 def validate_topic_name(name):
     """rcl_validate_topic_name: a (possibly relative, ~ or {sub}) topic or service name."""
     n = len(name)
@@ -131,6 +137,13 @@ class ExpansionError(ValueError):
 
 
 def expand_topic_name(name, node_name, namespace, substitutions=None):
+    if substitutions:
+        return _expand(name, node_name, namespace, tuple(sorted(substitutions.items())))
+    return _expand(name, node_name, namespace, ())
+
+
+@lru_cache(maxsize=4096)
+def _expand(name, node_name, namespace, substitutions):
     """rcl_expand_topic_name: relative, '~' and '{node}'/'{ns}'/'{namespace}' -> absolute."""
     if not name:
         raise ExpansionError("topic name must not be empty string")
@@ -142,7 +155,7 @@ def expand_topic_name(name, node_name, namespace, substitutions=None):
         is_absolute = True
     if "{" in out:
         subs = {"node": node_name, "ns": namespace, "namespace": namespace}
-        subs.update(substitutions or {})
+        subs.update(dict(substitutions))
         pieces = []
         i = 0
         while i < len(out):

@@ -139,7 +139,7 @@ def _record(create=True):
             _order += 1
             main = threading.current_thread() is threading.main_thread()
             rec = _Thread(threading.current_thread(), 0 if main else _order,
-                          RUNNING if main and _holder is None else RUNNING)
+                          RUNNING)
             _by_ident[ident] = rec
             _threads.append(rec)
             _threads.sort(key=lambda r: r.order)
@@ -290,40 +290,49 @@ def settle():
         _virtual_wait(lambda: False, None, settle=True)
 
 
+def adopt(thread):
+    """Make a not-yet-started thread a world thread (virtual time): it first runs when the
+    scheduler gives it the baton. Returns (enter, started): call enter() first thing in
+    the new thread, started() right after thread.start()."""
+    global _order
+    _record()                  # the creator is known too
+    ready = threading.Event()
+    with _lock:
+        _order += 1
+        rec = _Thread(thread, _order, NEW)
+        _threads.append(rec)
+    thread._labkit_world = True
+
+    def enter():
+        ready.wait()
+        _block(rec)
+
+    def started():
+        _by_ident[thread.ident] = rec
+        ready.set()
+    return enter, started
+
+
 def start_thread(target, name=None, args=(), kwargs=None, daemon=True):
     """Start a thread the world knows (it takes part in the baton in virtual time)."""
-    global _order
     kwargs = kwargs or {}
     if mode() != "virtual":
         t = threading.Thread(target=target, args=args, kwargs=kwargs, name=name, daemon=daemon)
         t.start()
         return t
-    _record()                  # the creator is known too
-    ready = threading.Event()
-    holder = {}
+    box = {}
 
     def run():
-        rec = holder["rec"]
-        ready.wait()
-        _block(rec)
+        box["enter"]()
         try:
             target(*args, **kwargs)
         finally:
-            with _lock:
-                rec.state = DONE
-                _forget(rec)
-                if _holder is rec:
-                    _hand_over()
+            thread_exit()
 
     t = threading.Thread(target=run, name=name, daemon=daemon)
-    with _lock:
-        _order += 1
-        rec = _Thread(t, _order, NEW)
-        holder["rec"] = rec
-        _threads.append(rec)
+    box["enter"], started = adopt(t)
     t.start()
-    _by_ident[t.ident] = rec
-    ready.set()
+    started()
     return t
 
 
@@ -349,14 +358,17 @@ def wait_started(thread, timeout_s):
 
 
 def join(thread, timeout_s=None):
-    """Join a world thread; in virtual time by waiting (so it can run)."""
-    if mode() == "virtual" and threading.current_thread() is not thread:
+    """Join a thread; a world thread is waited for at a wait point (so it can run)."""
+    if mode() == "virtual" and threading.current_thread() is not thread and \
+            thread.ident is not None and _by_ident.get(thread.ident) is not None:
         try:
             wait(lambda: finished(thread), timeout_s)
         except Deadlock:
             pass
-    thread.join(0 if mode() == "virtual" and thread.is_alive() and
-                _by_ident.get(thread.ident) is not None else timeout_s)
+        if not finished(thread):
+            return False
+        timeout_s = 1.0           # it is only unwinding now
+    threading.Thread.join(thread, timeout_s)
     return not thread.is_alive()
 
 

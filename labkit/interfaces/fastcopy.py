@@ -2,13 +2,21 @@
 
 Immutable values (numbers, str, bytes) are shared; array.array and numpy arrays
 are copied with one memcpy; nested messages and lists are copied recursively.
+
+The copy is what a subscriber would get from real rclpy, where every message
+crosses into C and back: scalar float32 fields come back rounded to float32
+(0.1 -> 0.10000000149011612) and sequences come back as lists.
 """
+import struct
+
 from labkit.interfaces import definition as d
 
 _copiers = {}
 
 
 def _kind(t):
+    if isinstance(t, d.BasicType) and t.typename == 'float':
+        return 'float32'
     if isinstance(t, d.AbstractNestedType):
         vt = t.value_type
         if isinstance(vt, d.BasicType) and vt.typename in d.ARRAY_TYPECODES:
@@ -21,9 +29,19 @@ def _build(cls):
     members = cls._labkit_members
     ns = {'new': object.__new__, 'cls': cls, 'list': list}
     lines = ['def copy(m):', '    n = new(cls)']
+    floats = ['_' + m.name for m in members if _kind(m.type) == 'float32']
+    if floats:
+        # one struct round trip rounds all float32 fields, as the C message would
+        fmt = struct.Struct('<%df' % len(floats))
+        ns['f32pack'], ns['f32unpack'] = fmt.pack, fmt.unpack
+        targets = ', '.join('n.%s' % f for f in floats)
+        sources = ', '.join('m.%s' % f for f in floats)
+        lines.append('    %s, = f32unpack(f32pack(%s))' % (targets, sources))
     for i, mem in enumerate(members):
         s = '_' + mem.name
         k = _kind(mem.type)
+        if k == 'float32':
+            continue
         if k == 'value':
             lines.append('    n.%s = m.%s' % (s, s))
         elif k == 'array':

@@ -3,6 +3,7 @@
 Classes are made on first attribute access (PEP 562 `__getattr__`), so importing
 `std_msgs.msg` costs nothing until a class is used.
 """
+import sys
 import threading
 import types
 
@@ -70,7 +71,7 @@ def module(name):
     pkg, kind = parts[0], parts[1]
     names = sorted(registry.index().get(pkg, {}).get(kind, {}))
     if len(parts) == 2:
-        if pkg not in registry.index() or (not names and kind != 'msg'):
+        if not names:
             raise LookupError("no interface module '%s'" % name)
         mod = InterfaceModule(name, pkg, kind, names)
     else:
@@ -87,3 +88,7 @@ def forget(pkgs):
     with _lock:
         for key in [k for k in _modules if k.split('.', 1)[0] in pkgs]:
             del _modules[key]
+    # an imported `pkg.msg` would go on serving the old names: the next import rebuilds it
+    for key, mod in list(sys.modules.items()):
+        if isinstance(mod, InterfaceModule) and key.split('.', 1)[0] in pkgs:
+            del sys.modules[key]

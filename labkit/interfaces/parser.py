@@ -233,6 +233,8 @@ class MessageSpec:
     """One message: `pkg/msg/Name` fields and constants (also a Request, Goal, ...)."""
 
     def __init__(self, pkg_name, msg_name, fields, constants, comments=()):
+        # rosidl_adapter checks the package and message names here (InvalidResourceName)
+        MsgType(pkg_name + '/' + msg_name)
         self.pkg_name = pkg_name
         self.msg_name = msg_name
         self.fields = list(fields)

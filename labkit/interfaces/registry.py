@@ -148,7 +148,7 @@ def _generate_cached(pkg, kind, tname):
     return _classes[key]
 
 
-def _resolve(nt, spec, field):
+def _resolve(nt, field):
     """The class of a nested type, or rosidl's UnknownMessageType."""
     try:
         return _generate_cached(nt.namespaces[0], nt.namespaces[1], nt.name)
@@ -163,7 +163,7 @@ def _members_of(spec):
     for f in spec.fields:
         t = f.type
         base = t.value_type if isinstance(t, d.AbstractNestedType) else t
-        cls = _resolve(base, spec, f) if isinstance(base, d.NamespacedType) else None
+        cls = _resolve(base, f) if isinstance(base, d.NamespacedType) else None
         members.append(g.Member(f.name, t, f.default, cls))
     return members
 

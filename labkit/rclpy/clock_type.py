@@ -8,3 +8,7 @@ class ClockType(IntEnum):
     ROS_TIME = 1
     SYSTEM_TIME = 2
     STEADY_TIME = 3
+
+    # rclpy's ClockType is a pybind11 enum: str() is 'ClockType.ROS_TIME'
+    def __str__(self):
+        return f'ClockType.{self.name}'

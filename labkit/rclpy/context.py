@@ -1,7 +1,6 @@
 """rclpy.context.Context: the lifecycle of init and shutdown (one per process by default)."""
 from inspect import ismethod
 import os
-import sys
 import threading
 import weakref
 
@@ -39,7 +38,7 @@ class Context:
                     'Domain id ({}) should not be lower than zero.'.format(domain_id))
             if self.__context is not None:
                 raise RuntimeError('Context.init() must only be called once')
-            argv = list(args if args is not None else sys.argv)
+            argv = list(args if args is not None else process.argv())
             try:
                 parsed = _arguments.parse(argv)
             except _arguments.ArgumentError as exc:

@@ -10,7 +10,7 @@ from labkit.rclpy import _wait
 from labkit.rclpy._entity import ENTITY_GEN
 from labkit.rclpy.clock import Clock, ClockType
 from labkit.rclpy.subscription import _NOTHING
-from labkit.rclpy.task import Future, Task
+from labkit.rclpy.task import Future, Task  # noqa: F401
 from labkit.rclpy.utilities import get_default_context
 
 __all__ = ['Executor', 'SingleThreadedExecutor', 'MultiThreadedExecutor', 'TimeoutException',
@@ -290,6 +290,8 @@ class Executor:
     def _next_timer_wait_ns(self):
         best = None
         for tmr in self._timers():
+            if not tmr.callback_group.can_execute(tmr):
+                continue                  # its group's release wakes us
             w = tmr._wait_ns()
             if w is not None and (best is None or w < best):
                 best = w
@@ -396,6 +398,7 @@ class Executor:
             return result
         finally:
             self._release(entity)
+            self.wake()
 
     async def _waitable_coro(self, waitable, data):
         try:
@@ -404,6 +407,7 @@ class Executor:
             await waitable.execute(data)
         finally:
             self._release(waitable)
+            self.wake()
 
 
 def _is_coroutine_function(entity, callback):

@@ -6,14 +6,16 @@ from labkit.graph import names as _names
 from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI, history_deque
 from labkit.rclpy._entity import bump as _entity_bump
 from labkit.rclpy._msgs import msg_class, type_name as _type_name
-from labkit.rclpy.callback_groups import (CallbackGroup, MutuallyExclusiveCallbackGroup,
+from labkit.rclpy.callback_groups import CallbackGroup  # noqa: F401 (rclpy.node has it)
+from labkit.rclpy.callback_groups import (MutuallyExclusiveCallbackGroup,
                                           ReentrantCallbackGroup)
 from labkit.rclpy.client import Client
-from labkit.rclpy.clock import Clock, ROSClock
+from labkit.rclpy.clock import Clock, ROSClock  # noqa: F401
 from labkit.rclpy.constants import S_TO_NS
-from labkit.rclpy.context import Context
-from labkit.rclpy.exceptions import (InvalidHandle, InvalidTopicNameException,
-                                     NotInitializedException, RCLError, UnknownROSArgsError)
+from labkit.rclpy.context import Context  # noqa: F401
+from labkit.rclpy.exceptions import InvalidTopicNameException  # noqa: F401
+from labkit.rclpy.exceptions import (InvalidHandle, NotInitializedException, RCLError,
+                                     UnknownROSArgsError)
 from labkit.rclpy.expand_topic_name import expand_topic_name
 from labkit.rclpy.guard_condition import GuardCondition
 from labkit.rclpy.logging import get_logger
@@ -171,11 +173,14 @@ class Node(ParameterMixin):
         ep.history = history_deque(qos_profile_rosout_default.depth)
         pub = Publisher(ep, log_cls, '/rosout', qos_profile_rosout_default)
         pub._node = self
+        pub._context = self._context
         GRAPH.add(ep)
         self._rosout_publisher = pub
         time_cls = msg_class('builtin_interfaces/msg/Time')
 
         def sink(level, name, msg, func, file, line, stamp_ns):
+            if not pub._context._ok or pub._destroyed:
+                return                  # rcl drops /rosout output once the context is gone
             sec, nsec = divmod(stamp_ns, S_TO_NS)
             pub.publish(log_cls(stamp=time_cls(sec=sec, nanosec=nsec), level=level, name=name,
                                 msg=msg, file=file, function=func, line=line))
@@ -363,6 +368,7 @@ class Node(ParameterMixin):
             event_callbacks=event_callbacks or PublisherEventCallbacks(),
             callback_group=callback_group)
         publisher._node = self
+        publisher._context = self._context
         ep.owner = publisher
         ep.on_incompatible = self._incompatible_warning(publisher, True)
         GRAPH.add(ep)

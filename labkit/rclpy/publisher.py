@@ -17,6 +17,7 @@ class Publisher:
         self._destroyed = False
         self._handle = Handle(self)
         self._node = None
+        self._context = _ALWAYS_OK
 
     def publish(self, msg):
         """Send a message to every matched subscription (a bytes message is CDR)."""
@@ -29,6 +30,9 @@ class Publisher:
         if self._destroyed:
             from labkit.rclpy.exceptions import InvalidHandle
             raise InvalidHandle('cannot use Destroyable because destruction was requested')
+        if not self._context._ok:
+            from labkit.rclpy.exceptions import RCLError
+            raise RCLError("Failed to publish: publisher's context is invalid")
         ep = self._endpoint
         sinks = ep.matched
         history = ep.history
@@ -67,3 +71,10 @@ class Publisher:
             self._destroyed = True
             from labkit.graph.registry import GRAPH
             GRAPH.remove(self._endpoint)
+
+
+class _AlwaysOk:
+    _ok = True
+
+
+_ALWAYS_OK = _AlwaysOk()

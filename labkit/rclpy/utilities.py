@@ -1,5 +1,4 @@
 """rclpy.utilities: the default context of the calling process, ok/shutdown helpers."""
-import sys
 import threading
 
 from labkit import process as _process
@@ -30,7 +29,7 @@ def get_default_context(*, shutting_down=False):
 def remove_ros_args(args=None):
     from labkit.rclpy.exceptions import RCLError
     try:
-        return _arguments.remove_ros_args(args if args is not None else sys.argv)
+        return _arguments.remove_ros_args(args if args is not None else _process.argv())
     except _arguments.ArgumentError as exc:
         raise RCLError(f'Failed to parse ROS arguments: {exc}') from None
 

@@ -27,6 +27,8 @@ TOOL_NODE_PREFIXES = ("labkit_",)
 PARAMETER_SERVICES = ("describe_parameters", "get_parameter_types", "get_parameters",
                       "list_parameters", "set_parameters", "set_parameters_atomically")
 TF_TOPICS = ("/tf", "/tf_static")
+# In "Nodes only", rqt_graph's "Debug" looks at an arrow's topic by these names only.
+QUIET_LABELS = ("/time", "/clock", "/rosout", "/statistics")
 
 _PREFIX = {"node": "n_", "topic": "t_", "service": "s_", "action": "a_", "tf": "g_"}
 
@@ -200,7 +202,8 @@ def build_view(snapshot: GraphSnapshot, options: ViewOptions = ViewOptions()) ->
     for topic, pub, sub in snapshot.qos_incompatible:
         bad_qos.setdefault(topic, {}).setdefault(pub, set()).add(sub)
 
-    grouped_tf = o.group_tf and not o.hide_tf and any(t in TF_TOPICS for t in topics)
+    grouped_tf = o.group_tf and not o.hide_tf and not o.nodes_only and \
+        any(t in TF_TOPICS for t in topics)
     topic_ids = {}
     for topic in topics:
         if grouped_tf and topic in TF_TOPICS:
@@ -259,9 +262,13 @@ def build_view(snapshot: GraphSnapshot, options: ViewOptions = ViewOptions()) ->
                 links.update(Link(v, "n_" + c, "topic") for c in clients)
 
     if o.hide_debug:   # rqt_graph's "Debug" (quiet) filter comes last
+        def debug_topic(name):
+            if o.nodes_only:
+                return name in QUIET_LABELS or name.rsplit("/", 1)[-1] == "parameter_events"
+            return name not in action_parts and is_debug_topic(name)
         for vid, v in list(vertices.items()):
             if (v.kind == "node" and is_debug_node(v.name)) or \
-                    (v.kind == "topic" and v.name not in action_parts and is_debug_topic(v.name)):
+                    (v.kind == "topic" and debug_topic(v.name)):
                 del vertices[vid]
         links = {l for l in links if l.start in vertices and l.end in vertices}
         # a service or action left with nobody around it is noise

@@ -140,3 +140,22 @@ def test_help_goes_to_stdout_and_exits_zero():
     assert r.returncode == 0 and 'Various node related sub-commands' in r.stdout
     r = run_command('')
     assert r.returncode == 0 and 'ros2 is an extensible command-line tool' in r.stdout
+
+
+def test_register_noun_and_a_broken_noun_is_one_line():
+    from labkit.cli import ros2
+    ros2.register_noun('clitestnoun', 'labkit_no_such_module_for_tests', 'A test noun')
+    try:
+        r = run_command('clitestnoun x')
+        assert r.returncode == 1
+        assert r.stderr == ("ros2: ModuleNotFoundError: No module named "
+                            "'labkit_no_such_module_for_tests'\n")
+        assert 'clitestnoun  A test noun' in run_command('-h').stdout
+    finally:
+        ros2._NOUNS.pop('clitestnoun')
+
+
+def test_pkg_xml_without_a_manifest():
+    r = run_command('pkg xml turtlesim')
+    assert (r.returncode, r.stderr) == (1, 'Package XML manifest not found\n')
+    assert run_command('pkg xml nope').stderr == 'Package not found\n'

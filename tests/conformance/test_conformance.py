@@ -6,6 +6,7 @@ Every script runs in both time modes: virtual (the book's CI) and live (a reader
 """
 import difflib
 import os
+import subprocess
 import sys
 
 import pytest
@@ -14,6 +15,7 @@ from _scripts import EXPECTED, HERE, JAZZY, run, script_args, scripts
 
 SCRIPTS = scripts()
 REPO = HERE.parents[1]
+TIMEOUT_S = 30  # each script takes at most a few seconds on real rclpy
 
 
 def run_on_labkit(path, time_mode):
@@ -21,8 +23,12 @@ def run_on_labkit(path, time_mode):
     # this tree's labkit (not whatever an editable install points at), never the
     # reference-only shim: labkit bundles example_interfaces itself
     env['PYTHONPATH'] = str(REPO)
-    return run([sys.executable, '-m', 'labkit', 'exec', '--time', time_mode, str(path),
-                *script_args(path)], path, env, 120)
+    try:
+        return run([sys.executable, '-m', 'labkit', 'exec', '--time', time_mode, str(path),
+                    *script_args(path)], path, env, TIMEOUT_S)
+    except subprocess.TimeoutExpired as e:  # run() has killed it
+        out = e.stdout.decode() if isinstance(e.stdout, bytes) else (e.stdout or '')
+        return 'timeout', out, f'still running after {TIMEOUT_S} s: killed'
 
 
 def test_every_script_has_an_expected_file():

@@ -57,3 +57,13 @@ def test_create_node_and_destroy(rclpy, msgs):
     from labkit.rclpy.exceptions import InvalidHandle
     with pytest.raises(InvalidHandle):
         node.get_name()
+
+
+def test_publish_after_shutdown(rclpy, msgs):
+    from labkit.rclpy.exceptions import RCLError
+    from labkit.rclpy.node import Node
+    pub = Node('n').create_publisher(msgs.String, 'x', 10)
+    rclpy.shutdown()
+    with pytest.raises(RCLError) as exc:
+        pub.publish(msgs.String())
+    assert str(exc.value) == "Failed to publish: publisher's context is invalid"

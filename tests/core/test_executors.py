@@ -148,3 +148,54 @@ def test_spin_on_shutdown_context_and_external_shutdown(rclpy, msgs):
     with pytest.raises(ExternalShutdownException):
         ex.spin()
     assert not rclpy.ok()
+
+
+def test_guard_condition_and_custom_waitable(rclpy):
+    from labkit.rclpy.node import Node
+    from labkit.rclpy.waitable import Waitable
+    node = Node('n')
+    fired = []
+    gc = node.create_guard_condition(lambda: fired.append('gc'))
+    rclpy.spin_once(node, timeout_sec=0)
+    assert fired == []
+    gc.trigger()
+    rclpy.spin_once(node, timeout_sec=0)
+    assert fired == ['gc']
+
+    class Countdown(Waitable):
+        def __init__(self, group, n):
+            super().__init__(group)
+            self.n = n
+
+        def is_ready(self, wait_set):
+            return self.n > 0
+
+        def take_data(self):
+            self.n -= 1
+            return self.n
+
+        async def execute(self, taken_data):
+            fired.append(taken_data)
+    node.add_waitable(Countdown(node.default_callback_group, 2))
+    for _ in range(4):
+        rclpy.spin_once(node, timeout_sec=0)
+    assert fired == ['gc', 1, 0]
+
+
+def test_future_api():
+    from labkit.rclpy.task import Future
+    f = Future()
+    seen = []
+    f.add_done_callback(lambda fut: seen.append(fut.result()))
+    assert not f.done()
+    f.set_result(3)
+    assert seen == [3] and f.done() and not f.cancelled()
+    f.add_done_callback(lambda fut: seen.append('late'))
+    assert seen == [3, 'late']
+    g = Future()
+    g.cancel()
+    assert g.cancelled()
+    h = Future()
+    h.set_exception(ValueError('x'))
+    with pytest.raises(ValueError):
+        h.result()

@@ -73,3 +73,11 @@ def test_rosout_message_fields(rclpy, msgs):
     assert (log.stamp.sec, log.stamp.nanosec) == (1704067200, 250_000_000)
     assert log.function == 'test_rosout_message_fields'
     assert log.file.endswith('test_logging.py') and log.line > 0
+
+
+def test_logging_after_shutdown_still_prints(rclpy, capfd):
+    from labkit.rclpy.node import Node
+    node = Node('late')
+    rclpy.shutdown()
+    node.get_logger().info('bye')
+    assert '[late]: bye' in capfd.readouterr().err

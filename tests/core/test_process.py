@@ -142,3 +142,49 @@ def test_print_goes_to_the_process_output(virtual):
         print('to stderr', file=sys.stderr)
     proc = process.start(main=main, name='printer', echo=False)
     assert proc.output == ['hello from the process', 'to stderr']
+
+
+def test_time_sleep_in_a_process_is_virtual(virtual):
+    stamps = []
+
+    def main(args=None):
+        import time
+        import labkit.rclpy as rclpy
+        from labkit.rclpy.node import Node
+        rclpy.init(args=args)
+        node = Node('sleeper')
+        try:
+            while True:
+                stamps.append(node.get_clock().now().nanoseconds)
+                time.sleep(1.0)
+        except KeyboardInterrupt:
+            stamps.append('interrupted')
+
+    proc = process.start(main=main, name='sleeper')
+    labkit.sleep(3.5)
+    assert len(stamps) == 4 and stamps[-1] - stamps[0] == 3 * 10**9
+    proc.stop()
+    assert stamps[-1] == 'interrupted' and proc.returncode == 0
+
+
+def test_main_without_args_sees_its_argv(virtual, monkeypatch):
+    import sys
+    import types
+    from labkit import executables
+    seen = {}
+
+    def main():
+        import labkit.rclpy as rclpy
+        from labkit.rclpy.node import Node
+        rclpy.init()                       # no args: the process's own argv, like sys.argv
+        seen['name'] = Node('orig').get_name()
+        seen['rest'] = rclpy.utilities.remove_ros_args()
+    mod = types.ModuleType('labkit_fake_noargs')
+    mod.main = main
+    monkeypatch.setitem(sys.modules, 'labkit_fake_noargs', mod)
+    executables.register('demo_pkg', 'noargs', 'labkit_fake_noargs:main')
+    try:
+        process.start(['demo_pkg', 'noargs', 'extra', '--ros-args', '-r', '__node:=renamed'])
+    finally:
+        executables.unregister_package('demo_pkg')
+    assert seen == {'name': 'renamed', 'rest': ['/opt/ros/humble/lib/demo_pkg/noargs', 'extra']}

@@ -71,7 +71,8 @@ def test_module_objects():
     assert pkg.msg is li.module('turtlesim.msg') and pkg.__path__ == []
     assert sorted(pkg.__all__) == ['action', 'msg', 'srv']
     assert li.module('std_msgs').__all__ == ['msg']
-    for bad in ['nope_msgs', 'std_msgs.foo', 'nope_msgs.msg', 'std_msgs.msg._nope', 'std_msgs.srv']:
+    for bad in ['nope_msgs', 'std_msgs.foo', 'nope_msgs.msg', 'std_msgs.msg._nope', 'std_msgs.srv',
+                'std_srvs.msg']:
         with pytest.raises(LookupError):
             li.module(bad)
 

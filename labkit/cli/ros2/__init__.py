@@ -135,12 +135,14 @@ def run_command(command):
     chunks = []
     out, err = _Recorder('stdout', chunks), _Recorder('stderr', chunks)
     streams = Streams(out, err)
-    _base._streams = streams
+    _base.set_parse_streams(streams)
     try:
         parser = build_parser(argv)
         args = parser.parse_args(argv)
     except ParserExit as e:
         return CompletedCommand(argv, e.status, out.getvalue(), err.getvalue(), None, chunks)
+    except Exception as e:  # a noun module that cannot load: one line, as everywhere
+        return CompletedCommand(argv, 1, '', f'ros2: {type(e).__name__}: {e}\n', e)
     verb = getattr(args, '_verb', None)
     if verb is None:
         target = getattr(args, '_noun_parser', parser)

@@ -7,6 +7,7 @@ import argparse
 import copy
 import itertools
 import sys
+import threading
 
 import yaml
 
@@ -38,7 +39,11 @@ class Streams:
         print(*values, sep=sep, end=end, file=self.err)
 
 
-_streams = None  # the Streams of the command being parsed (argparse prints through it)
+_parsing = threading.local()  # .streams: the Streams of the command this thread parses
+
+
+def set_parse_streams(streams):
+    _parsing.streams = streams
 
 
 class Parser(argparse.ArgumentParser):
@@ -51,7 +56,8 @@ class Parser(argparse.ArgumentParser):
     def _print_message(self, message, file=None):
         if not message:
             return
-        target = _streams.err if (file is not None and file is not sys.stdout) else _streams.out
+        streams = _parsing.streams
+        target = streams.err if (file is not None and file is not sys.stdout) else streams.out
         target.write(message)
 
     def exit(self, status=0, message=None):
@@ -119,7 +125,7 @@ def patience():
 class GaveUp(CliError):
     def __init__(self, what):
         super().__init__(f'labkit: gave up after {VIRTUAL_PATIENCE_S:g} s of simulated time '
-                         f'{what} (virtual time; start it first)')
+                         f'{what} (a terminal would wait until Ctrl-C)')
 
 
 # --------------------------------------------------------------------------- the CLI node
@@ -270,13 +276,6 @@ def _get(identifier, default_kind):
 def get_message(identifier):
     cls = _get(identifier, 'msg')
     if not hasattr(cls, 'SLOT_TYPES') and not hasattr(cls, '__slots__'):
-        raise ValueError(identifier)
-    return cls
-
-
-def get_service(identifier):
-    cls = _get(identifier, 'srv')
-    if not (hasattr(cls, 'Request') and hasattr(cls, 'Response')):
         raise ValueError(identifier)
     return cls
 

@@ -106,7 +106,8 @@ def xml(args, io):
     if found is None:
         return PACKAGE_NOT_FOUND
     path = os.path.join(found, 'share', args.package_name, 'package.xml')
-    if not os.path.isfile(path):
+    # the bundled packages have no manifest; never read a path of this machine for them
+    if found == INSTALL_PREFIX or not os.path.isfile(path):
         return 'Package XML manifest not found'
     tree = ET.parse(path)
     if args.tag is None:

@@ -26,6 +26,8 @@ def declare_qos_override_parameters(node):
 
 def like_rclcpp(node):
     """Give an rclpy node the parameters and the subscription an rclcpp node has."""
+    # parameter refusals and listings in rclcpp's words (`ros2 param set/load` print them)
+    node._labkit_parameter_dialect = "rclcpp"
     declare_qos_override_parameters(node)
     qos = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST,
                      reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.VOLATILE)

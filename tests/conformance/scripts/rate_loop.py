@@ -21,9 +21,6 @@ class StatePublisher(Node):
         super().__init__('state_publisher')
         qos_profile = QoSProfile(depth=10)
         self.joint_pub = self.create_publisher(JointState, 'joint_states', qos_profile)
-        self.received = []
-        self.create_subscription(JointState, 'joint_states',
-                                 lambda m: self.received.append(m.position[0]), qos_profile)
 
     def run(self, iterations):
         loop_rate = self.create_rate(30)
@@ -51,15 +48,25 @@ class StatePublisher(Node):
 def main():
     rclpy.init(args=[])
     node = StatePublisher()
+    # another node keeps what was published (queue of 10); spinning a subscription in
+    # the loop's own node would take spin_once's turn from the rate's timer and hang
+    listener = rclpy.create_node('listener')
+    received = []
+    listener.create_subscription(JointState, 'joint_states',
+                                 lambda m: received.append(m.position[0]), 10)
+    for _ in range(100):
+        if node.joint_pub.get_subscription_count():
+            break
+        rclpy.spin_once(listener, timeout_sec=0.05)
     elapsed = node.run(10)
     # 10 loops at 30 Hz: about a third of a second of ROS time
     print('loops done; elapsed within [0.25 s, 2 s]:', 0.25 <= elapsed < 2.0)
-    for _ in range(20):
-        if len(node.received) >= 9:
+    for _ in range(40):
+        if len(received) >= 10:
             break
-        rclpy.spin_once(node, timeout_sec=0.05)
-    print('received at least 9 of 10 (the 10th may still be queued):', len(node.received) >= 9,
-          'first ones in order:', node.received[:5])
+        rclpy.spin_once(listener, timeout_sec=0.05)
+    print('listener received:', received)
+    listener.destroy_node()
 
     # spellings from the tf2 tutorials
     when = node.get_clock().now() - rclpy.time.Duration(seconds=5.0)

@@ -1,0 +1,147 @@
+"""A small sandbox "home folder" for the book, and the shell commands it needs.
+
+A chapter that builds a workspace on disk does it in a throw-away folder next
+to the notebook (`use_home('_work')`). Inside it, `~` means that folder, and
+every path labkit prints shows it as the home of the container user, `/root`,
+so the printed text is the same on every machine and reads like a terminal's:
+
+    use_home('_work')          # ~ is now ./_work, shown as /root
+    mkdir('~/ros2_ws/src')     # mkdir -p ~/ros2_ws/src
+    cd('~/ros2_ws/src')        # cd ~/ros2_ws/src
+    pwd()                      # /root/ros2_ws/src
+    tree('~/ros2_ws')          # tree ~/ros2_ws
+    leave_home()               # back to where we were; the folder is removed
+
+Without a sandbox, `~` is the real home folder and paths print unchanged.
+"""
+import os
+import shutil
+
+SHOWN_HOME = '/root'
+
+_home = None        # the real folder standing for ~ (absolute), or None
+_created = None     # the outermost folder use_home() had to create
+_previous_cwd = None
+
+
+def use_home(folder, *, clean=True):
+    """Make `folder` the sandbox home (created; emptied first when `clean`)."""
+    global _home, _created, _previous_cwd
+    real = os.path.abspath(folder)
+    if clean and os.path.isdir(real):
+        shutil.rmtree(real)
+    _created = real
+    while not os.path.exists(os.path.dirname(_created)):
+        _created = os.path.dirname(_created)
+    os.makedirs(real, exist_ok=True)
+    if _previous_cwd is None:
+        _previous_cwd = os.getcwd()
+    _home = real
+    os.chdir(real)          # a new terminal starts in the home folder
+    # returns nothing: a notebook cell would print the path of this machine
+
+
+def leave_home(*, remove=True):
+    """Go back to the folder we were in before use_home(); remove the sandbox."""
+    global _home, _created, _previous_cwd
+    if _previous_cwd is not None:
+        os.chdir(_previous_cwd)
+    if remove and _home is not None and os.path.isdir(_home):
+        shutil.rmtree(_home)
+        # remove the empty parents use_home() created (`_work` of `_work/ch08`), no others
+        folder = os.path.dirname(_home)
+        while _created is not None and len(folder) >= len(_created):
+            try:
+                os.rmdir(folder)
+            except OSError:
+                break
+            folder = os.path.dirname(folder)
+    _home, _created, _previous_cwd = None, None, None
+
+
+def home():
+    """The real folder `~` stands for."""
+    return _home if _home is not None else os.path.expanduser('~')
+
+
+def expand(path):
+    """`~` and `~/x` -> the real folder (as a shell expands them); others unchanged."""
+    path = os.fspath(path)
+    if path == '~' or path.startswith('~/'):
+        return home() + path[1:]
+    return path
+
+
+def display(path):
+    """How a terminal in the sandbox would print `path` (relative paths stay relative)."""
+    path = os.fspath(path)
+    if path == '~' or path.startswith('~/'):
+        path = expand(path)
+    if _home is not None and os.path.isabs(path):
+        if path == _home:
+            return SHOWN_HOME
+        if path.startswith(_home + os.sep):
+            return SHOWN_HOME + '/' + os.path.relpath(path, _home).replace(os.sep, '/')
+    return path
+
+
+def display_abspath(path):
+    return display(os.path.abspath(expand(path)))
+
+
+# ----------------------------------------------------------------------------- shell commands
+
+def mkdir(*paths):
+    """`mkdir -p PATH...`"""
+    for path in paths:
+        os.makedirs(expand(path), exist_ok=True)
+
+
+def cd(path='~'):
+    """`cd PATH`"""
+    os.chdir(expand(path))
+
+
+def pwd():
+    """`pwd`"""
+    print(display(os.getcwd()))
+
+
+def ls(path='.'):
+    """`ls PATH` (names sorted, one line, like ls when its output is not a terminal's)."""
+    print('  '.join(sorted(os.listdir(expand(path)))))
+
+
+def cat(path):
+    """`cat PATH`"""
+    with open(expand(path), encoding='utf-8') as f:
+        print(f.read(), end='')
+
+
+def tree_lines(path='.'):
+    """The lines `tree PATH` prints: entries sorted by name (C locale), then the counts."""
+    real = expand(path)
+    lines = [display(path)]
+    counts = {'dirs': 0, 'files': 0}
+
+    def walk(folder, prefix):
+        names = sorted(os.listdir(folder))
+        for i, name in enumerate(names):
+            last = i == len(names) - 1
+            lines.append(prefix + ('└── ' if last else '├── ') + name)
+            full = os.path.join(folder, name)
+            if os.path.isdir(full) and not os.path.islink(full):
+                counts['dirs'] += 1
+                walk(full, prefix + ('    ' if last else '│   '))
+            else:
+                counts['files'] += 1
+
+    walk(real, '')
+    d, f = counts['dirs'], counts['files']
+    lines += ['', f"{d} director{'y' if d == 1 else 'ies'}, {f} file{'' if f == 1 else 's'}"]
+    return lines
+
+
+def tree(path='.'):
+    """`tree PATH`"""
+    print('\n'.join(tree_lines(path)))
