@@ -11,7 +11,8 @@ Everything else is ordinary ROS 2 code.
 """
 __version__ = "0.1.0"
 
-__all__ = ["ros2", "sleep", "reset", "activate", "time_mode", "load_ipython_extension",
+__all__ = ["ros2", "sleep", "reset", "activate", "time_mode", "set_time_mode",
+           "load_ipython_extension",
            "unload_ipython_extension"]
 
 
@@ -46,6 +47,12 @@ def time_mode():
     """'live' or 'virtual' (see labkit/ARCHITECTURE.md, 'Time and determinism')."""
     from labkit.graph import world
     return world.mode()
+
+
+def set_time_mode(mode):
+    """Choose 'live' or 'virtual' time before anything has started (see ARCHITECTURE.md)."""
+    from labkit.graph import world
+    world.set_mode(mode)
 
 
 def activate():

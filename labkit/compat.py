@@ -201,7 +201,7 @@ def _serialization_module():
     module = types.ModuleType('rclpy.serialization')
 
     def serialize_message(message):
-        return ifc.serialize(message)
+        return ifc.rmw_serialize(message)  # Humble's bytes, padding included
 
     def deserialize_message(serialized_message, message_type):
         return ifc.deserialize(serialized_message, message_type)

@@ -151,10 +151,11 @@ def _thread_start(self):
     if getattr(self, "_labkit_process", None) is None and proc is not MAIN:
         self._labkit_process = proc
     enter = started = None
-    if world.mode() == "virtual" and not getattr(self, "_labkit_world", False) and (
-            proc is not MAIN or _spins_rclpy(self)):
-        # a thread a process starts (or one that spins rclpy) takes part in virtual time
-        # from its first line, so what it does is deterministic
+    if world.mode() == "virtual" and not getattr(self, "_labkit_world", False) and \
+            _spins_rclpy(self):
+        # a thread that spins rclpy takes part in virtual time from its first line, so what
+        # it does is deterministic; other threads join at their first wait point (a thread
+        # that never waits there, e.g. a live widget poller, must not hold the baton)
         enter, started = world.adopt(self)
     run = self.run
 
@@ -351,5 +352,10 @@ def reset_all():
     MAIN.stop()
     from labkit.graph.registry import GRAPH
     GRAPH.clear()
-    # virtual time starts over too: what follows a reset prints the same every run
+    # let threads that were told to stop finish, then virtual time starts over too: what
+    # follows a reset prints the same every run
+    try:
+        world.settle()
+    except world.Deadlock:
+        pass
     world.restart_clock()

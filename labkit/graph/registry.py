@@ -140,7 +140,7 @@ class Graph:
                     incompatible.append((pub, sub, kind))
             pub.matched = matched      # a new list: a publish in progress keeps its old one
         for pub, sub, kind in incompatible:
-            for ep, other in ((pub, sub), (sub, pub)):
+            for ep, other in ((sub, pub), (pub, sub)):
                 if ep.on_incompatible is not None:
                     try:
                         ep.on_incompatible(other, kind)

@@ -257,7 +257,9 @@ def _virtual_wait(predicate, timeout_ns, settle=False):
     rec.settle = False
     if rec.deadlock:
         rec.deadlock = False
-        raise Deadlock("every thread waits and nothing can wake them (virtual time)")
+        raise Deadlock("every thread waits and nothing can wake them (virtual time): this "
+                       "call would block forever on a real ROS 2 system too (is the node "
+                       "that should answer spinning?)")
     return rec.result or bool(predicate())
 
 

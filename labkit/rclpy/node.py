@@ -377,32 +377,11 @@ class Node(ParameterMixin):
         return publisher
 
     def _incompatible_warning(self, entity, is_publisher):
-        logger = self._logger
-        counts = [0]
-
-        def event(other, policy_kind):
-            from labkit.rclpy.qos import QoSPolicyKind
-            from labkit.rclpy.qos_event import QoSIncompatibleQoSInfo
-            counts[0] += 1
-            callbacks = entity.event_callbacks
-            user = getattr(callbacks, 'incompatible_qos', None)
-            if user is not None:
-                user(QoSIncompatibleQoSInfo(counts[0], 1, QoSPolicyKind(policy_kind or 1)))
-                return
-            if callbacks is not None and not getattr(callbacks, 'use_default_callbacks', True):
-                return
-            policy = QoSPolicyKind(policy_kind).name + '_QOS_POLICY' if policy_kind else 'INVALID'
-            if is_publisher:
-                logger.warning(
-                    f"New subscription discovered on topic '{entity.topic_name}', requesting "
-                    "incompatible QoS. No messages will be sent to it. Last incompatible "
-                    f"policy: {policy}")
-            else:
-                logger.warning(
-                    f"New publisher discovered on topic '{entity.topic_name}', offering "
-                    "incompatible QoS. No messages will be received from it. Last incompatible "
-                    f"policy: {policy}")
-        return event
+        """The incompatible-QoS event: like rclpy, it is handled when the node spins."""
+        from labkit.rclpy.qos_event import QoSEventHandler
+        handler = QoSEventHandler(self, entity, is_publisher)
+        entity.event_handlers.append(handler)
+        return handler.occurred
 
     def create_subscription(self, msg_type, topic, callback, qos_profile, *, callback_group=None,
                             event_callbacks=None, qos_overriding_options=None, raw=False):
@@ -569,8 +548,7 @@ class Node(ParameterMixin):
             if not any(n.name == node_name and n.namespace == ns
                        for n in GRAPH.node_infos(self._domain())):
                 raise NodeNameNonExistentError(
-                    f'cannot get {what} names and types for nonexistent node: Node name not '
-                    f'found: ns=[{ns}], name=[{node_name}]')
+                    f'cannot get {what} names and types for nonexistent node: error not set')
             return GRAPH.names_and_types(kinds, self._domain(), (node_name, ns))
 
     def get_publisher_names_and_types_by_node(self, node_name, node_namespace,

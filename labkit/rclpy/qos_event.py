@@ -1,5 +1,8 @@
-"""QoS event callbacks (accepted; in-process endpoints never miss deadlines or liveliness)."""
+"""QoS events: incompatible QoS is reported (when the node spins, as in rclpy); in-process
+endpoints never miss deadlines or liveliness, so those callbacks are accepted but never run."""
 from enum import IntEnum
+
+from labkit.rclpy._entity import ReadyEntity
 
 
 class QoSPublisherEventType(IntEnum):
@@ -49,3 +52,58 @@ class PublisherEventCallbacks:
         self.liveliness = liveliness
         self.incompatible_qos = incompatible_qos
         self.use_default_callbacks = use_default_callbacks
+
+
+class QoSEventHandler(ReadyEntity):
+    """Queues incompatible-QoS events of one publisher/subscription for its node's executor."""
+
+    _kind = 'guard'
+
+    def __init__(self, node, entity, is_publisher):
+        self._node = node
+        self._entity = entity
+        self._is_publisher = is_publisher
+        self._events = []
+        self._total = 0
+        self.callback_group = node.default_callback_group
+        self.callback = self._handle
+        self._executor_event = False
+
+    def occurred(self, other, policy_kind):
+        from labkit.rclpy.qos import QoSPolicyKind
+        self._total += 1
+        self._events.append(QoSIncompatibleQoSInfo(self._total, 1,
+                                                   QoSPolicyKind(policy_kind or 1)))
+        self._signal()
+
+    def _has_work(self):
+        return bool(self._events)
+
+    def _take(self):
+        from labkit.rclpy.subscription import _NOTHING
+        if not self._events:
+            return _NOTHING
+        return self._events.pop(0)
+
+    def _callback_and_args(self, info):
+        return self._handle, (info,)
+
+    def _handle(self, info):
+        callbacks = getattr(self._entity, 'event_callbacks', None)
+        user = getattr(callbacks, 'incompatible_qos', None)
+        if user is not None:
+            user(info)
+            return
+        if callbacks is not None and not getattr(callbacks, 'use_default_callbacks', True):
+            return
+        logger = self._node.get_logger()
+        policy = info.last_policy_kind.name
+        topic = self._entity.topic
+        if self._is_publisher:
+            logger.warn(f"New subscription discovered on topic '{topic}', requesting "
+                        'incompatible QoS. No messages will be sent to it. '
+                        f'Last incompatible policy: {policy}')
+        else:
+            logger.warn(f"New publisher discovered on topic '{topic}', offering incompatible "
+                        'QoS. No messages will be received from it. '
+                        f'Last incompatible policy: {policy}')

@@ -96,42 +96,58 @@ class Timer:
 
 
 class Rate:
-    """A convenience class for sleeping in a loop at a specified rate (needs a spinning executor)."""
+    """Sleep at a fixed rate: the rate's timer sets an event (it must be spun by an executor,
+    as in rclpy); sleep() returns once the event is set, and the last sleeper clears it."""
 
     def __init__(self, timer, *, context):
         self._timer = timer
-        self._presleep_event = None
+        self._is_shutdown = False
+        self._is_destroyed = False
+        self._event = False
         self._lock = threading.Lock()
         self._num_sleepers = 0
-        self._fired = 0
-        self._context = context
-        self._is_shutdown = False
-        timer.callback = self._timer_callback
+        timer.callback = self._set
         context.on_shutdown(self._on_shutdown)
 
-    def _timer_callback(self):
-        self._fired += 1
+    def _set(self):
+        self._event = True
+        world.notify()
 
     def _on_shutdown(self):
         self._is_shutdown = True
         self.destroy()
 
     def destroy(self):
-        self._is_shutdown = True
-        self._timer.cancel()
-        world.notify()
+        self._is_destroyed = True
+        self._set()
 
     def _presleep(self):
+        from labkit.rclpy.exceptions import InvalidHandle, ROSInterruptException
         if self._is_shutdown:
-            from labkit.rclpy.exceptions import ROSInterruptException
+            raise ROSInterruptException()
+        if self._is_destroyed:
+            raise RuntimeError('Rate cannot sleep because it has been destroyed')
+        if self._timer._destroyed:
+            self.destroy()
+            raise InvalidHandle('Rate cannot sleep because the timer has been destroyed')
+        with self._lock:
+            self._num_sleepers += 1
+
+    def _postsleep(self):
+        from labkit.rclpy.exceptions import ROSInterruptException
+        with self._lock:
+            self._num_sleepers -= 1
+            if self._num_sleepers == 0:
+                self._event = False
+        if self._is_shutdown:
+            self.destroy()
             raise ROSInterruptException()
 
     def sleep(self):
-        """Block until the next timer period (the timer fires in the executor that spins it)."""
-        self._presleep()
+        """Block until the timer triggers (a world wait point)."""
         from labkit.rclpy import _wait
-        target = self._fired + 1
-        _wait.wait(lambda: self._fired >= target or self._is_shutdown)
-        if self._is_shutdown:
-            from labkit.rclpy.exceptions import ROSInterruptException
-            raise ROSInterruptException()
+        self._presleep()
+        try:
+            _wait.wait(lambda: self._event)
+        finally:
+            self._postsleep()

@@ -163,6 +163,12 @@ class TurtleCanvas:
         self._stop.clear()
         # a plain thread: it only reads the world, so it never takes part in virtual time
         self._thread = threading.Thread(target=self._follow, name="turtle-canvas", daemon=True)
+        # turtlesim_node shows its window from its own process thread; labkit.process would
+        # then adopt this thread into that process and into virtual time, where its plain
+        # Event waits hold the baton forever. A viewer belongs to neither.
+        from labkit import process
+        self._thread._labkit_world = True          # not a world thread: no baton
+        self._thread._labkit_process = process.MAIN  # not joined when turtlesim stops
         self._thread.start()
 
     def stop(self):

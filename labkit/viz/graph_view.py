@@ -242,8 +242,15 @@ class GraphView:
 
     # -- live following
     def start(self):
-        """Follow the graph from a background thread (poll the change counter every 0.5 s)."""
+        """Follow the graph from a background thread (poll the change counter every 0.5 s).
+
+        Meant for live time. In virtual time only the notebook's own thread may
+        start it: a poller started inside a labkit process would join that
+        process's turn-taking and hold up the simulated world.
+        """
         if self._thread is not None and self._thread.is_alive():
+            return
+        if not _live_mode() and threading.current_thread() is not threading.main_thread():
             return
         self._stop.clear()
         _QUERY.hold()
@@ -313,8 +320,8 @@ def main(args=None):
     except ImportError:
         shell = None
     if shell is not None and getattr(shell, "kernel", None) is not None:
-        view.show()
-    else:
+        view.show()               # follows the graph in live time
+    elif _live_mode():
         view.start()
     try:
         rclpy.spin(node)

@@ -140,3 +140,23 @@ def test_settle_runs_new_work_without_time_passing(virtual, msgs):
     virtual.settle()
     assert got == ['x']
     assert virtual.steady_ns() == 0
+
+
+def test_rate_with_spin_once_loop_like_state_publisher(virtual):
+    """The r2d2 state_publisher pattern: `while ok: spin_once; ...; rate.sleep()`."""
+    stamps = []
+
+    def main(args=None):
+        import labkit.rclpy as rclpy
+        from labkit.rclpy.node import Node
+        rclpy.init(args=args)
+        node = Node('state_publisher')
+        rate = node.create_rate(10)
+        while rclpy.ok():
+            rclpy.spin_once(node)
+            stamps.append(node.get_clock().now().nanoseconds - 1704067200 * 10**9)
+            rate.sleep()
+
+    process.start(main=main, name='sp')
+    labkit.sleep(0.5)
+    assert stamps == [100_000_000, 200_000_000, 300_000_000, 400_000_000, 500_000_000]

@@ -54,22 +54,20 @@ def test_deadlock_is_raised_in_the_waiting_thread(virtual):
     assert virtual.steady_ns() == 100_000_000
 
 
-def test_threads_started_by_a_process_are_world_threads(virtual):
-    from labkit import process
-    out = []
-
-    def main(args=None):
-        def helper():
-            virtual.sleep(1.0)
-            out.append(virtual.steady_ns())
-        t = threading.Thread(target=helper)
-        t.start()
-        t.join()
-        out.append('joined')
-
-    proc = process.start(main=main, name='threads')
-    virtual.sleep(2.0)
-    assert out == [1_000_000_000, 'joined'] and proc.returncode == 0
+def test_spinning_threads_are_world_threads(virtual, msgs):
+    import labkit.rclpy as rclpy
+    from labkit.rclpy.node import Node
+    rclpy.init()
+    node = Node('n')
+    ticks = []
+    node.create_timer(0.25, lambda: ticks.append(virtual.steady_ns()))
+    t = threading.Thread(target=rclpy.spin, args=(node,))
+    t.start()
+    virtual.sleep(1.0)
+    assert ticks == [250_000_000, 500_000_000, 750_000_000, 1_000_000_000]
+    rclpy.shutdown()
+    t.join()
+    assert not t.is_alive()
 
 
 def test_a_plain_thread_joins_the_world_at_its_first_wait(virtual):
@@ -93,3 +91,19 @@ def test_restart_clock(virtual):
     virtual.sleep(5.0)
     virtual.restart_clock()
     assert virtual.steady_ns() == 0
+
+
+def test_reset_with_a_spinning_thread_in_main(virtual):
+    import labkit
+    import labkit.rclpy as rclpy
+    from labkit.rclpy.node import Node
+    rclpy.init()
+    node = Node('n')
+    node.create_timer(0.3, lambda: None)
+    t = threading.Thread(target=rclpy.spin, args=(node,))
+    t.start()
+    virtual.sleep(1.0)
+    labkit.reset()
+    assert virtual.steady_ns() == 0
+    t.join(1.0)
+    assert not t.is_alive()

@@ -181,7 +181,12 @@ def test_rqt_graph_executable(context):
         # rqt_graph does not draw itself
         assert GraphView().edges() == [("/chatter", "/listener"), ("/talker", "/chatter")]
         assert ("/" + rqt[0]) in GraphView(hide_debug=False).view().names("node")
+        # it follows the graph in live time only (a poller must not stall virtual time)
+        from labkit.graph import world
+        pollers = [t for t in threading.enumerate() if t.name == "labkit-graph-view"]
+        assert len(pollers) == (1 if world.mode() == "live" else 0)
         p.stop()
+        assert not [t for t in threading.enumerate() if t.name == "labkit-graph-view"]
         assert not [n for n in all_node_names() if n.startswith("rqt_gui_py_node_")]
     finally:
         executables.unregister_package("rqt_graph")

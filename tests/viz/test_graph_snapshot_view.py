@@ -394,3 +394,11 @@ def test_qos_incompatible_topic_is_red():
     assert "ros2 topic info -v /image" in tip
     fine = parse(GraphView(snapshot=spec).svg())
     assert "red" not in ET.tostring(fine, encoding="unicode")
+
+
+def test_rendering_writes_nothing_to_stderr(capfd):
+    """Jupyter shows (and nbval compares) what Graphviz or fontconfig print on fd 2."""
+    for kw in ({}, {"nodes_only": True, "services": True}, {"actions": "expand", "services": True}):
+        GraphView(snapshot=TURTLESIM, **kw).svg()
+    captured = capfd.readouterr()
+    assert captured.err == ""

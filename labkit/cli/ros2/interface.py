@@ -1,13 +1,8 @@
 """ros2 interface list | show | package | packages | proto (ros2interface)."""
-import re
-
 from labkit.cli.ros2._base import add_verbs, message_to_yaml
 
 INSTALL_PREFIX = '/opt/ros/humble'  # where a Humble install keeps its share/ (for error texts)
 
-PRIMITIVES = {'bool', 'byte', 'char', 'float32', 'float64', 'int8', 'uint8', 'int16', 'uint16',
-              'int32', 'uint32', 'int64', 'uint64', 'string', 'wstring', 'time', 'duration'}
-SEPARATORS = ('---',)
 
 
 def _ifc():
@@ -143,55 +138,8 @@ def _show_args(p):
                                 "interface show -').")
 
 
-_FIELD = re.compile(r'^\s*([A-Za-z][\w/]*)(\[[^\]]*\])?(<=\d+)?\s+([A-Za-z]\w*)')
-
-
-class Line:
-    """One line of an interface file: its text, comment state and nested type."""
-
-    def __init__(self, package, text):
-        self.text = text
-        code, hash_, comment = _split_comment(text)
-        self.code = code.rstrip()
-        self.has_comment = bool(hash_)
-        self.nested_type = None
-        if self.code.strip() in SEPARATORS or not self.code.strip():
-            return
-        m = _FIELD.match(self.code)
-        if not m:
-            return
-        base = m.group(1)
-        if self.code[m.end():].lstrip().startswith('='):  # a constant: `int32 FOO=1`
-            return
-        if base in PRIMITIVES or base.split('<=')[0] in PRIMITIVES:
-            return
-        if '/' in base:
-            pkg, name = base.split('/', 1)
-            self.nested_type = f'{pkg}/msg/{name}' if '/' not in name else base
-        elif base == 'Header':
-            self.nested_type = 'std_msgs/msg/Header'
-        else:
-            self.nested_type = f'{package}/msg/{base}'
-
-    def is_comment_only(self):
-        return self.has_comment and not self.code.strip()
-
-
-def _split_comment(text):
-    """(code, '#', comment) honouring quotes in string constants/defaults."""
-    quote = None
-    for i, ch in enumerate(text):
-        if quote:
-            if ch == quote:
-                quote = None
-        elif ch in '"\'':
-            quote = ch
-        elif ch == '#':
-            return text[:i], '#', text[i + 1:]
-    return text, '', ''
-
-
-def _read_lines(identifier):
+def _check_name(identifier):
+    """ros2interface's errors for a name it cannot show."""
     parts = identifier.split('/')
     if len(parts) != 3:
         raise ValueError(
@@ -202,30 +150,19 @@ def _read_lines(identifier):
     if parts[0] not in ifc.list_packages():
         raise LookupError(f"Unknown package '{parts[0]}'")
     try:
-        text = ifc.get_interface_text(identifier)
+        ifc.get_interface_text(identifier)
     except (LookupError, ValueError):
         raise LookupError("Could not find the interface "
                           f"'{INSTALL_PREFIX}/share/{identifier}.idl'")
-    return [Line(parts[0], raw.rstrip()) for raw in text.splitlines()]
-
-
-def _show(io, identifier, show_comments, show_nested_comments, indent):
-    for line in _read_lines(identifier):
-        text = line.text
-        if not show_comments:
-            if not text.strip() or line.is_comment_only():
-                continue
-            if line.has_comment:
-                text = line.code.rstrip()
-        io.print(indent * '\t' + text if text else '')
-        if line.nested_type:
-            _show(io, line.nested_type, show_nested_comments, show_nested_comments, indent + 1)
 
 
 def show(args, io):
     if not args.type:
         return 'the passed value is empty'
     try:
-        _show(io, args.type, not args.no_comments, args.all_comments, 0)
+        _check_name(args.type)
     except (ValueError, LookupError) as e:
         return str(e)
+    from labkit.interfaces.show import interface_show
+    io.print(interface_show(args.type, all_comments=args.all_comments,
+                            no_comments=args.no_comments), end='')
