@@ -21,7 +21,7 @@ def split_redirect(line):
     """'param dump /t > t.yaml' -> (['param', 'dump', '/t'], 't.yaml', 'w')."""
     lexer = shlex.shlex(line, posix=True, punctuation_chars='>')
     lexer.whitespace_split = True
-    lexer.commenters = ''
+    lexer.commenters = '#'   # `%ros2 node list  # comment` drops the comment, as a shell does
     tokens = list(lexer)
     target, mode = None, None
     for i, token in enumerate(tokens):

@@ -1,0 +1,86 @@
+"""The ament resource index: which packages exist and where (ament_index_python's view).
+
+A prefix holds `share/ament_index/resource_index/<resource_type>/<name>` marker
+files. Prefixes are searched in AMENT_PREFIX_PATH order (a later-sourced
+workspace is prepended, so its packages win), then labkit's bundled prefix,
+a read-only folder inside labkit standing for /opt/ros/humble.
+"""
+import os
+
+RESOURCE_INDEX = os.path.join('share', 'ament_index', 'resource_index')
+# Bundled packages (turtlesim, std_msgs, ...): what a Humble binary install reports.
+SHOWN_INSTALL_PREFIX = '/opt/ros/humble'
+BUNDLED_PREFIX = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'prefix')
+
+
+class PackageNotFoundError(KeyError):
+    """ament_index_python's error (a KeyError, like the real one)."""
+
+
+def prefixes():
+    """Workspace prefixes from AMENT_PREFIX_PATH, first wins."""
+    value = os.environ.get('AMENT_PREFIX_PATH', '')
+    return [p for p in value.split(os.pathsep) if p]
+
+
+def resources(resource_type, prefix):
+    folder = os.path.join(prefix, RESOURCE_INDEX, resource_type)
+    try:
+        return sorted(e.name for e in os.scandir(folder)
+                      if e.is_file() and not e.name.startswith('.'))
+    except OSError:
+        return []
+
+
+def get_resources(resource_type):
+    """name -> prefix of every resource of a type (first prefix wins)."""
+    found = {}
+    for prefix in prefixes():
+        for name in resources(resource_type, prefix):
+            found.setdefault(name, prefix)
+    return found
+
+
+def bundled_package_names():
+    """Packages labkit itself provides (executables, bundled interfaces and manifests)."""
+    names = set(resources('packages', BUNDLED_PREFIX))
+    try:
+        from labkit import executables
+        names |= {p for p, _ in executables.BUILTIN}
+    except Exception:
+        pass
+    try:
+        from labkit.interfaces import registry
+        names |= {n for n, kinds in registry._scan_root(registry.BUNDLED_SHARE).items()
+                  if any(kinds.values())}
+    except Exception:
+        pass
+    return {n for n in names if not n.startswith('_')}
+
+
+def package_names():
+    """Workspace packages (from AMENT_PREFIX_PATH); bundled ones are listed by ros2 pkg."""
+    return sorted(get_resources('packages'))
+
+
+def package_prefix(name):
+    """Prefix of a workspace package; LookupError for unknown or bundled ones."""
+    found = get_resources('packages').get(name)
+    if found is None:
+        raise LookupError(name)
+    return found
+
+
+def get_package_prefix(package_name):
+    try:
+        return package_prefix(package_name)
+    except LookupError:
+        pass
+    if package_name in bundled_package_names():
+        return BUNDLED_PREFIX
+    raise PackageNotFoundError(
+        "package '{}' not found, searching: {}".format(package_name, prefixes()))
+
+
+def get_package_share_directory(package_name):
+    return os.path.join(get_package_prefix(package_name), 'share', package_name)
