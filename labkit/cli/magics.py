@@ -42,6 +42,13 @@ def emit(result, target=None, mode='w'):
     chunks = getattr(result, 'chunks', None)
     if chunks is None:
         chunks = [('stdout', result.stdout), ('stderr', result.stderr)]
+    merged = []  # one write per run of the same stream keeps stored notebooks small
+    for name, text in chunks:
+        if merged and merged[-1][0] == name:
+            merged[-1] = (name, merged[-1][1] + text)
+        elif text:
+            merged.append((name, text))
+    chunks = merged
     if target is not None:
         with open(target, mode) as f:
             f.write(''.join(text for name, text in chunks if name == 'stdout'))

@@ -1,6 +1,7 @@
 """ros2 pkg executables | list | prefix | xml (ros2pkg) over labkit's package index."""
 import os
 
+from labkit.ament import create
 from labkit.cli.ros2._base import add_verbs
 
 INSTALL_PREFIX = '/opt/ros/humble'  # the prefix a Humble binary install reports
@@ -9,6 +10,7 @@ PACKAGE_NOT_FOUND = 'Package not found'
 
 def add_arguments(parser, cli_name):
     add_verbs(parser, cli_name, [
+        ('create', 'Create a new ROS 2 package', create.add_arguments, create.verb),
         ('executables', 'Output a list of package specific executables', _exe_args,
          executables),
         ('list', 'Output a list of available packages', None, list_),

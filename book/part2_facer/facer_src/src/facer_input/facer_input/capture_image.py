@@ -108,6 +108,8 @@ class CaptureImage(Node):
             feedback_msg.state = self.camera_state
             goal_handle.publish_feedback(feedback_msg)
             time.sleep(0.5)  # 只让这个线程等待，定时器回调在别的线程照常运行
+            if not rclpy.ok():  # 等待期间节点被关闭了（Ctrl-C）：到此为止
+                return result
         goal_handle.succeed()
         result.finish = 'action completed'
         return result

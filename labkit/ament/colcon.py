@@ -1,0 +1,384 @@
+"""`colcon build` (and `colcon list`) in the current folder, as colcon-core/colcon-ros do it.
+
+`run_command("build --symlink-install")` returns the same CompletedCommand
+as labkit.ros2. Packages are found below --base-paths (default: `.`),
+ordered by their package.xml dependencies, built one after the other into
+install/<pkg> (isolated layout), with build/, install/ and log/ laid out
+like the real tool's.
+
+Times: in live mode colcon prints measured wall-clock times. In virtual time
+mode it prints a deterministic *cost model* instead (build.py's `cost`: a
+fixed base per build type plus a share per module, interface, data file),
+so a notebook prints the same times on every run and machine; the figures
+are of the size a real Humble build shows, not measurements.
+
+`colcon test` / `test-result` are meant to be added as further verbs here
+(VERBS), reusing discovery, selection and the per-package job loop.
+"""
+import argparse
+import datetime
+import os
+import time
+
+from labkit.ament import build, workspace
+
+VERBS = ('build', 'list')
+
+
+# ------------------------------------------------------------------ output helpers
+
+def format_duration(seconds):
+    """colcon's format: 0.41s, 12.3s, 1min 5s, 1h 2min 3s."""
+    minutes, secs = divmod(seconds, 60)
+    hours, minutes = divmod(minutes, 60)
+    if hours or minutes:
+        decimals = 0
+    elif round(secs, 2) < 9.995:
+        decimals = 2
+    elif round(secs, 1) < 59.95:
+        decimals = 1
+    else:
+        decimals = 0
+    text = f'{secs:.{decimals}f}s'
+    if hours:
+        return f'{int(hours)}h {int(minutes)}min {text}'
+    if minutes:
+        return f'{int(minutes)}min {text}'
+    return text
+
+
+def _plural(n, word='package'):
+    return f'{n} {word}' + ('' if n == 1 else 's')
+
+
+class _Clock:
+    """Elapsed time since colcon started: measured (live) or the cost model (virtual)."""
+
+    def __init__(self):
+        from labkit.graph import world
+        self.virtual = world.mode() == 'virtual'
+        self.start = time.monotonic()
+        self.model = 0.0
+
+    def now(self):
+        return self.model if self.virtual else time.monotonic() - self.start
+
+    def add(self, cost):
+        self.model += cost
+
+
+def _timestamp():
+    """The log folder's name part: now (live), or the virtual clock's date."""
+    from labkit.graph import world
+    seconds = world.system_ns() / 1e9
+    return datetime.datetime.fromtimestamp(seconds, datetime.timezone.utc).strftime(
+        '%Y-%m-%d_%H-%M-%S') if world.mode() == 'virtual' else \
+        datetime.datetime.now().strftime('%Y-%m-%d_%H-%M-%S')
+
+
+# ------------------------------------------------------------------ parser
+
+def _parser():
+    from labkit.cli.ros2._base import Parser
+    parser = Parser(prog='colcon', description='colcon is an extensible command line tool '
+                    'to build and test multiple software packages.',
+                    formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('--log-base', default='log')
+    parser.add_argument('--log-level', default=None)
+    sub = parser.add_subparsers(title='colcon verbs', dest='verb', parser_class=Parser)
+    for verb, doc in (('build', 'Build a set of packages'), ('list', 'List packages, '
+                                                               'optionally in topological '
+                                                               'ordering')):
+        p = sub.add_parser(verb, description=doc, help=doc)
+        p.add_argument('--base-paths', nargs='*', default=['.'], metavar='PATH',
+                       help='The base paths to recursively crawl for packages '
+                            '(default: .)')
+        p.add_argument('--packages-select', nargs='*', metavar='PKG_NAME',
+                       help='Only process a subset of packages')
+        p.add_argument('--packages-skip', nargs='*', metavar='PKG_NAME',
+                       help='Skip a set of packages')
+        p.add_argument('--packages-up-to', nargs='*', metavar='PKG_NAME',
+                       help='Only process a subset of packages and their recursive '
+                            'dependencies')
+        if verb == 'build':
+            p.add_argument('--build-base', default='build',
+                           help='The base path for all build directories (default: build)')
+            p.add_argument('--install-base', default='install',
+                           help='The base path for all install prefixes (default: install)')
+            p.add_argument('--merge-install', action='store_true',
+                           help='Merge all install prefixes into a single location')
+            p.add_argument('--symlink-install', action='store_true',
+                           help='Use symlinks instead of copying files where possible')
+            p.add_argument('--continue-on-error', action='store_true',
+                           help='Continue other packages when a package fails to build')
+            p.add_argument('--event-handlers', nargs='*', default=[], metavar='name+/-',
+                           help='Enable or disable event handlers')
+            p.add_argument('--executor', default='parallel',
+                           choices=['parallel', 'sequential'])
+            p.add_argument('--parallel-workers', type=int, default=os.cpu_count() or 1,
+                           metavar='NUMBER')
+            p.add_argument('--cmake-args', nargs='*', metavar='*')
+            p.add_argument('--cmake-clean-cache', action='store_true')
+            p.add_argument('--allow-overriding', nargs='*', default=[], metavar='PKG_NAME')
+        else:
+            p.add_argument('--topological-order', '-t', action='store_true')
+            p.add_argument('--names-only', '-n', action='store_true')
+            p.add_argument('--paths-only', '-p', action='store_true')
+    return parser
+
+
+# ------------------------------------------------------------------ entry point
+
+def run_command(command):
+    """Run one colcon command line (without the leading `colcon`)."""
+    import shlex
+
+    from labkit.cli.ros2 import CompletedCommand, _Recorder
+    from labkit.cli.ros2._base import ParserExit, Streams, set_parse_streams
+    argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
+    if argv[:1] == ['colcon']:
+        argv = argv[1:]
+    chunks = []
+    out, err = _Recorder('stdout', chunks), _Recorder('stderr', chunks)
+    io = Streams(out, err)
+    set_parse_streams(io)
+    parser = _parser()
+    try:
+        args = parser.parse_args(argv)
+    except ParserExit as e:
+        return CompletedCommand(['colcon', *argv], e.status, out.getvalue(), err.getvalue(),
+                                None, chunks)
+    if args.verb is None:
+        io.print(parser.format_usage(), end='')
+        io.eprint('Error: No verb provided')
+        rc = 1
+    else:
+        clock = _Clock()
+        try:
+            rc = (build_verb if args.verb == 'build' else list_verb)(args, io, clock)
+        except RuntimeError as e:
+            io.eprint(f'[{clock.now():.3f}s] ERROR:colcon:colcon {args.verb}: {e}')
+            rc = 1
+    return CompletedCommand(['colcon', *argv], rc, out.getvalue(), err.getvalue(), None,
+                            chunks)
+
+
+def _select(args, io, clock, skip_dirs=()):
+    packages = workspace.discover(args.base_paths, skip_dirs)
+    message = workspace.duplicates(packages)
+    if message:
+        raise RuntimeError(message)
+    names = {p.name for p in packages}
+    selected = set(names)
+    for option, values in (('--packages-select', args.packages_select),
+                           ('--packages-up-to', args.packages_up_to),
+                           ('--packages-skip', args.packages_skip)):
+        for name in values or ():
+            if name not in names:
+                io.eprint(f"[{clock.now():.3f}s] WARNING:colcon.colcon_core.package_selection:"
+                          f"ignoring unknown package '{name}' in {option}")
+    if args.packages_select is not None:
+        selected &= set(args.packages_select)
+    if args.packages_up_to is not None:
+        selected &= workspace.up_to(packages, args.packages_up_to)
+    if args.packages_skip:
+        selected -= set(args.packages_skip)
+    ordered = workspace.topological_order(packages)
+    return ordered, [p for p in ordered if p.name in selected]
+
+
+def list_verb(args, io, clock):
+    ordered, selected = _select(args, io, clock)
+    if not args.topological_order:
+        selected = sorted(selected, key=lambda p: p.name)
+    for p in selected:
+        path = os.path.relpath(p.path)
+        if args.names_only:
+            io.print(p.name)
+        elif args.paths_only:
+            io.print(path)
+        else:
+            io.print(f'{p.name}\t{path}\t(ros.{p.build_type})')
+    return 0
+
+
+def build_verb(args, io, clock):
+    if args.merge_install:
+        io.eprint('labkit: --merge-install is not supported; use the default isolated '
+                  'install layout')
+        return 1
+    build_base = os.path.abspath(args.build_base)
+    install_base = os.path.abspath(args.install_base)
+    log_base = os.path.abspath(args.log_base)
+    skip = (build_base, install_base, log_base)
+    ordered, selected = _select(args, io, clock, skip)
+    direct = '+' in ''.join(h for h in args.event_handlers if h.startswith('console_direct'))
+
+    for base in (build_base, install_base, log_base):
+        os.makedirs(base, exist_ok=True)
+        _touch(os.path.join(base, 'COLCON_IGNORE'))
+    log_dir = _new_log_dir(log_base)
+
+    in_workspace = {p.name for p in ordered}
+
+    def is_installed(name):
+        """Install prefix of a package built here (this run or before), or of an underlay."""
+        prefix = os.path.join(install_base, name)
+        if os.path.isdir(os.path.join(prefix, 'share', name)):
+            return prefix
+        if name in in_workspace:
+            return None     # in this workspace but not built (yet): CMake cannot find it
+        from labkit.ament import index
+        try:
+            return index.package_prefix(name)
+        except LookupError:
+            return None
+
+    finished, failed, stderr_pkgs, events = [], [], [], []
+    blocked = set()
+    for pkg in selected:
+        deps = workspace.recursive_deps(ordered)[pkg.name]
+        if failed and not args.continue_on_error or deps & blocked:
+            blocked.add(pkg.name)
+            continue
+        io.print(f'Starting >>> {pkg.name}')
+        events.append(f'[{clock.now():.6f}] (-) JobStarted: {{\'identifier\': '
+                      f'\'{pkg.name}\'}}')
+        started = clock.now()
+        ctx = build.Context(pkg, build_base, install_base, args.symlink_install,
+                            is_installed)
+        builder = {'ament_python': build.build_ament_python,
+                   'ament_cmake': build.build_ament_cmake,
+                   'cmake': build.build_ament_cmake}.get(pkg.build_type)
+        if builder is None:
+            res = build.BuildResult().fail(
+                f"labkit: build type '{pkg.build_type}' of package '{pkg.name}' is not "
+                "supported (ament_python, ament_cmake)")
+        else:
+            try:
+                res = builder(ctx)
+            except Exception as e:     # a labkit bug: fail this package, say why
+                res = build.BuildResult().fail(f'{type(e).__name__}: {e}')
+        clock.add(res.cost)
+        for warning in res.warnings:
+            io.eprint(f'[{clock.now():.3f}s] {warning}')
+        if direct:
+            for line in res.stdout:
+                io.print(line)
+        if res.stderr:
+            stderr_pkgs.append(pkg.name)
+            if direct:
+                for line in res.stderr:
+                    io.eprint(line)
+            else:
+                io.eprint(f'--- stderr: {pkg.name}')
+                for line in res.stderr:
+                    io.eprint(line)
+                io.eprint('---')
+        took = format_duration(max(clock.now() - started, 0.0))
+        _write_package_log(log_dir, pkg.name, res)
+        if res.returncode:
+            failed.append((pkg.name, res.returncode))
+            blocked.add(pkg.name)
+            io.print(f'Failed   <<< {pkg.name} [{took}, exited with code {res.returncode}]')
+        else:
+            finished.append(pkg.name)
+            io.print(f'Finished <<< {pkg.name} [{took}]')
+        events.append(f'[{clock.now():.6f}] ({pkg.name}) JobEnded: {{\'identifier\': '
+                      f'\'{pkg.name}\', \'rc\': {res.returncode}}}')
+
+    clock.add(0.25)     # discovery, ordering and the summary itself
+    _write_install_scripts(install_base, [p for p in ordered if os.path.isdir(
+        os.path.join(install_base, p.name))])
+    _write_log_summary(log_dir, events)
+    if failed or stderr_pkgs or blocked:
+        io.print('')
+    io.print(f'Summary: {_plural(len(finished))} finished [{format_duration(clock.now())}]')
+    if failed:
+        io.print(f'  {_plural(len(failed))} failed: ' + ' '.join(n for n, _ in failed))
+    if stderr_pkgs:
+        io.print(f'  {_plural(len(stderr_pkgs))} had stderr output: ' + ' '.join(stderr_pkgs))
+    if blocked - {n for n, _ in failed}:
+        io.print(f'  {_plural(len(blocked - {n for n, _ in failed}))} not processed')
+    return failed[0][1] if failed else 0
+
+
+# ------------------------------------------------------------------ files colcon leaves
+
+def _touch(path):
+    if not os.path.exists(path):
+        open(path, 'w').close()
+
+
+def _new_log_dir(log_base):
+    """log/build_<stamp>/ and the latest_build and latest links, as colcon makes them."""
+    stamp = _timestamp()
+    name = f'build_{stamp}'
+    folder = os.path.join(log_base, name)
+    n = 1
+    while os.path.exists(folder):      # two builds in the same (virtual) second
+        n += 1
+        name = f'build_{stamp}_{n}'
+        folder = os.path.join(log_base, name)
+    os.makedirs(folder)
+    for link, target in (('latest_build', name), ('latest', 'latest_build')):
+        path = os.path.join(log_base, link)
+        if os.path.lexists(path):
+            os.unlink(path)
+        os.symlink(target, path)
+    return folder
+
+
+def _write_package_log(log_dir, name, res):
+    folder = os.path.join(log_dir, name)
+    os.makedirs(folder, exist_ok=True)
+    out = ''.join(line + '\n' for line in res.stdout)
+    err = ''.join(line + '\n' for line in res.stderr)
+    for fname, text in (('stdout.log', out), ('stderr.log', err),
+                        ('stdout_stderr.log', out + err), ('streams.log', out + err),
+                        ('command.log', '')):
+        with open(os.path.join(folder, fname), 'w', encoding='utf-8') as f:
+            f.write(text)
+
+
+def _write_log_summary(log_dir, events):
+    with open(os.path.join(log_dir, 'events.log'), 'w', encoding='utf-8') as f:
+        f.write(''.join(e + '\n' for e in events))
+    with open(os.path.join(log_dir, 'logger_all.log'), 'w', encoding='utf-8') as f:
+        f.write('')
+
+
+def _write_install_scripts(install_base, packages):
+    """install/setup.bash & co: shell scripts that do what labkit.source() does."""
+    _write(os.path.join(install_base, '.colcon_install_layout'), 'isolated\n')
+    order = ' '.join(p.name for p in packages)
+    local = (
+        '# generated by labkit colcon: source the packages of this workspace in order\n'
+        '_colcon_prefix="$(builtin cd "`dirname "${BASH_SOURCE[0]}"`" > /dev/null && pwd)"\n'
+        f'for _pkg in {order}; do\n'
+        '  _p="$_colcon_prefix/$_pkg"\n'
+        '  export AMENT_PREFIX_PATH="$_p${AMENT_PREFIX_PATH:+:$AMENT_PREFIX_PATH}"\n'
+        '  if [ -d "$_p/lib/python3.10/site-packages" ]; then\n'
+        '    export PYTHONPATH="$_p/lib/python3.10/site-packages'
+        '${PYTHONPATH:+:$PYTHONPATH}"\n'
+        '  fi\n'
+        'done\n'
+        'export COLCON_PREFIX_PATH="$_colcon_prefix${COLCON_PREFIX_PATH:+:'
+        '$COLCON_PREFIX_PATH}"\n'
+        'unset _p _pkg _colcon_prefix\n')
+    chain = (
+        '# generated by labkit colcon: the underlay first, then this workspace\n'
+        '_colcon_prefix="$(builtin cd "`dirname "${BASH_SOURCE[0]}"`" > /dev/null && pwd)"\n'
+        'if [ -f /opt/ros/humble/local_setup.bash ]; then\n'
+        '  . /opt/ros/humble/local_setup.bash\nfi\n'
+        '. "$_colcon_prefix/local_setup.bash"\n')
+    for shell in ('bash', 'sh', 'zsh'):
+        _write(os.path.join(install_base, f'local_setup.{shell}'), local)
+        _write(os.path.join(install_base, f'setup.{shell}'),
+               chain.replace('local_setup.bash', f'local_setup.{shell}'))
+
+
+def _write(path, text):
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, 'w', encoding='utf-8') as f:
+        f.write(text)
