@@ -7,3 +7,24 @@
 """
 from labkit.ament.files import (cat, cd, leave_home, ls, mkdir, pwd, tree,  # noqa: F401
                                 use_home)
+
+# --- workspaces (colcon build, source, the ament index, rosdep) -------------------------------
+# `ros2 pkg` asks labkit.ament for package_names() / package_prefix(); the magics and the
+# `ament_index_python` import name are registered here, on first import of labkit.ament.
+# Entry points: labkit.ament.colcon.run_command(command), labkit.ament.source.run(path),
+# labkit.ament.rosdep.run_command(command).
+from labkit.ament.index import package_names, package_prefix  # noqa: E402,F401
+
+
+def _register_extensions():
+    from labkit import compat
+    from labkit.cli import magics
+    compat.register_alias('ament_index_python', 'labkit.ament.ament_index_python')
+    compat.register_alias('launch', 'labkit.launch')
+    compat.register_alias('launch_ros', 'labkit.launch_ros')
+    from labkit.ament import magics as ament_magics
+    for name, fn in ament_magics.MAGICS.items():
+        magics.register(name, fn)
+
+
+_register_extensions()

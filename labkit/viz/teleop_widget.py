@@ -21,6 +21,30 @@ def _spacer():
     return widgets.Label("", layout=widgets.Layout(width="24px"))
 
 
+def _keys_html(rows):
+    key = ("display:inline-block;width:30px;height:26px;line-height:26px;margin:2px;"
+           "text-align:center;border:1px solid #888;border-radius:4px;background:#f4f4f4;"
+           "font-family:monospace")
+    gap = "display:inline-block;width:34px"
+    out = []
+    for row in rows:
+        cells = "".join(f"<span style='{key}'>{html.escape(label)}</span>" if label
+                        else f"<span style='{gap}'></span>" for label in row)
+        out.append(f"<div>{cells}</div>")
+    return "".join(out)
+
+
+def static_keypad_html():
+    """The teleop keys as a still picture (what the live widget looks like)."""
+    arrows = _keys_html([["", "\u2191", ""], ["\u2190", "\u2193", "\u2192"]])
+    rotations = _keys_html([["E", "R", "T"], ["D", "F", "G"], ["C", "V", "B"]])
+    cell = "display:inline-block;vertical-align:middle;margin-right:18px"
+    return ("<div style='border:1px solid #888;padding:6px;display:inline-block'>"
+            "<b>turtle_teleop_key</b><br>"
+            f"<div style='{cell}'>{arrows}</div><div style='{cell}'>{rotations}</div>"
+            f"<div style='{cell}'>{_keys_html([['Q']])}</div></div>")
+
+
 class TeleopWidget:
     """Calls `press(key_name)` for every key pressed or button clicked."""
 
@@ -77,8 +101,9 @@ class TeleopWidget:
 
     def show(self):
         from labkit.viz.display import show
-        # static face (HTML book): the instructions as the terminal prints them
-        show(self.box, text=BANNER, html="<pre>%s</pre>" % html.escape(BANNER))
+        # Static face (HTML book): a picture of the key pad. The banner itself is
+        # already in the process output, so it is not repeated here.
+        show(self.box, text="<turtle_teleop_key keyboard>", html=static_keypad_html())
 
     def _ipython_display_(self):
         self.show()

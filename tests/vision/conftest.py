@@ -11,20 +11,26 @@ FACER_SRC = os.path.join(REPO, 'book', 'part2_facer', 'facer_src', 'src')
 PACKAGES = ('facer_input', 'facer_handle', 'facer_output')
 
 
-@pytest.fixture(scope='session')
+@pytest.fixture(scope='module')
 def hook():
     """`import rclpy`, `import cv_bridge`, `import facer_interfaces.srv` resolve to labkit."""
     from labkit import compat
     import labkit.interfaces as ifc
     import labkit.vision
+    was_active = compat.is_active()
     compat.activate(quiet=True)
     labkit.vision.register()
     ifc.add_share_path(FACER_SRC)
-    for pkg in PACKAGES:
-        path = os.path.join(FACER_SRC, pkg)
-        if path not in sys.path:
-            sys.path.insert(0, path)
+    added = [os.path.join(FACER_SRC, pkg) for pkg in PACKAGES]
+    sys.path[:0] = added
     yield
+    for path in added:
+        sys.path.remove(path)
+    for name in [m for m in sys.modules if m.split('.')[0] in PACKAGES]:
+        del sys.modules[name]
+    ifc.remove_share_path(FACER_SRC)
+    if not was_active:
+        compat.deactivate()
 
 
 @pytest.fixture

@@ -40,7 +40,6 @@ class CaptureImage(Node):
                                 dynamic_typing=True))
 
         self.cv_bridge = CvBridge()
-        self.camera_state = CAMERA_OFF  # 第一帧之前就可能有动作目标到来
         self.cap = None
         self.open_source(self.get_parameter('source').value)
 
@@ -63,6 +62,8 @@ class CaptureImage(Node):
             self.cap.release()
         self.source = source
         self.cap = cv2.VideoCapture(source)
+        # 在这里就给 camera_state 赋值：第一帧之前就可能有动作目标到来
+        self.camera_state = CAMERA_ON if self.cap.isOpened() else CAMERA_OFF
         if not self.cap.isOpened():
             self.get_logger().warn(f'无法打开图像来源 {source!r}')
 
