@@ -68,6 +68,8 @@ def activate(*, quiet=False):
     if _finder is None:
         _finder = _LabkitFinder()
     sys.meta_path.insert(0, _finder)
+    from labkit import plugins
+    plugins.register_all()
     return True
 
 

@@ -259,7 +259,8 @@ def install_output_proxy():
 
 # ------------------------------------------------------------ start
 def _resolve(argv):
-    from labkit import executables
+    from labkit import executables, plugins
+    plugins.register_all()
     if len(argv) < 2:
         raise LookupError("ros2 run needs a package and an executable")
     package, executable = argv[0], argv[1]

@@ -259,7 +259,7 @@ def build_verb(args, io, clock):
                 res = builder(ctx)
             except Exception as e:     # a labkit bug: fail this package, say why
                 res = build.BuildResult().fail(f'{type(e).__name__}: {e}')
-        clock.add(res.cost)
+        clock.add(res.cost or 0.3)     # a failed step still took a moment
         for warning in res.warnings:
             io.eprint(f'[{clock.now():.3f}s] {warning}')
         if direct:

@@ -77,6 +77,11 @@ def get_package_prefix(package_name):
     except LookupError:
         pass
     if package_name in bundled_package_names():
+        if os.path.isdir(os.path.join(BUNDLED_PREFIX, 'share', package_name)):
+            return BUNDLED_PREFIX
+        from labkit.interfaces import registry
+        if os.path.isdir(os.path.join(registry.BUNDLED_SHARE, package_name)):
+            return os.path.dirname(registry.BUNDLED_SHARE)     # <prefix>/share/<pkg>/msg
         return BUNDLED_PREFIX
     raise PackageNotFoundError(
         "package '{}' not found, searching: {}".format(package_name, prefixes()))

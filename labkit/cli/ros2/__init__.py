@@ -125,6 +125,8 @@ def build_parser(argv):
 
 def run_command(command):
     """Run one ros2 command line; returns a CompletedCommand, or a Job for long-running verbs."""
+    from labkit import plugins
+    plugins.register_all()
     try:
         argv = split_command(command)
     except ValueError as e:  # unbalanced quotes

@@ -1,0 +1,123 @@
+"""ImageViewer: show a sensor_msgs/Image topic in a notebook (what rqt_image_view does).
+
+    viewer = ImageViewer('face_image')   # starts a small subscriber process
+    viewer                               # live widget in JupyterLab, a PNG in the book
+    viewer.frame                         # the newest frame as a BGR numpy array
+
+The subscriber is an ordinary rclpy node (`/image_viewer`) in its own labkit
+process, so it shows up in `ros2 node list` like the real tool would.
+"""
+import threading
+import time
+
+import cv2
+import numpy as np
+
+from labkit.viz.canvas import PNG
+
+
+class ImageViewer:
+    """The newest image on `topic`, as a live widget and as a static picture."""
+
+    def __init__(self, topic='image_raw', fps=10.0, node_name='image_viewer'):
+        self.topic = topic
+        self.fps = fps
+        self.node_name = node_name
+        self.frame = None            # newest frame, BGR (what cv2.imshow would show)
+        self.frames_received = 0
+        self._widget = None
+        self._last_push = 0.0
+        self._lock = threading.Lock()
+        from labkit import process
+        self.process = process.start(name=node_name, main=self._main, args=[node_name], echo=False)
+
+    # -- the subscriber process -----------------------------------------------------------
+    def _main(self, args=None):
+        import labkit.rclpy as rclpy
+        from labkit.interfaces import get_type
+        from labkit.vision.cv_bridge import CvBridge, CvBridgeError
+
+        bridge = CvBridge()
+        rclpy.init(args=args)
+        node = rclpy.create_node(self.node_name)
+
+        def on_image(msg):
+            try:
+                frame = bridge.imgmsg_to_cv2(msg, 'bgr8')
+            except CvBridgeError as e:  # e.g. a 32FC1 depth image: show it scaled to grey
+                frame = _grey_for_display(bridge.imgmsg_to_cv2(msg), e)
+            with self._lock:
+                self.frame = frame
+                self.frames_received += 1
+            self._push()
+
+        node.create_subscription(get_type('sensor_msgs/msg/Image'), self.topic, on_image, 10)
+        try:
+            rclpy.spin(node)
+        except KeyboardInterrupt:
+            pass
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+    # -- static face ----------------------------------------------------------------------
+    def snapshot(self):
+        """The newest frame as PNG bytes (a grey 'no image' picture before the first one)."""
+        with self._lock:
+            frame = self.frame
+        if frame is None:
+            frame = np.full((240, 320, 3), 64, np.uint8)
+            cv2.putText(frame, 'waiting for ' + self.topic, (10, 125),
+                        cv2.FONT_HERSHEY_SIMPLEX, 0.6, (220, 220, 220), 1, cv2.LINE_AA)
+        return PNG(cv2.imencode('.png', frame)[1].tobytes())
+
+    def _repr_png_(self):
+        return bytes(self.snapshot())
+
+    # -- live face ------------------------------------------------------------------------
+    @property
+    def widget(self):
+        if self._widget is None:
+            from ipywidgets import Image as ImageWidget
+            self._widget = ImageWidget(value=bytes(self.snapshot()), format='png')
+        return self._widget
+
+    def _push(self):
+        """Send the newest frame to the widget, at most `fps` times a wall-clock second."""
+        if self._widget is None:
+            return
+        now = time.monotonic()
+        if now - self._last_push < 1.0 / self.fps:
+            return
+        self._last_push = now
+        with self._lock:
+            frame = self.frame
+        ok, jpeg = cv2.imencode('.jpg', frame, [cv2.IMWRITE_JPEG_QUALITY, 85])
+        try:
+            self._widget.format = 'jpeg'
+            self._widget.value = jpeg.tobytes()
+        except Exception:  # a closed widget: stop pushing
+            self._widget = None
+
+    def _ipython_display_(self):
+        from labkit.viz.display import show
+        show(self.widget, png=bytes(self.snapshot()), text='<image viewer: %s>' % self.topic)
+
+    def close(self):
+        """Stop the subscriber process and the widget."""
+        if self.process is not None:
+            self.process.stop()
+            self.process = None
+        if self._widget is not None:
+            self._widget.close()
+            self._widget = None
+
+
+def _grey_for_display(image, _error):
+    """Scale any one-channel image to 0..255 grey, then to BGR (rqt_image_view does similar)."""
+    if image.ndim == 3:
+        image = image[:, :, 0]
+    image = np.nan_to_num(image.astype(np.float64))
+    lo, hi = float(image.min()), float(image.max())
+    grey = np.zeros(image.shape, np.uint8) if hi <= lo else \
+        ((image - lo) * (255.0 / (hi - lo))).astype(np.uint8)
+    return cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR)
