@@ -90,10 +90,14 @@ def main():
         f = json.loads(lines[-1])
         fps = f['frames'] / f['wall_s']
         per_frame = f['wall_s'] / max(f['frames'], 1)
-        outside = 1.0 - f['detect_s'] / f['wall_s']
-        print(f"{mode:<8} 640x480: {fps:5.2f} frames/s through identify_image "
-              f"({per_frame * 1e3:6.1f} ms a frame, {f['cores']} cores); "
-              f"outside detectMultiScale: {outside * 100:4.1f}% of wall time")
+        busy = f['detect_s'] / f['wall_s']
+        line = (f"{mode:<8} 640x480: {fps:5.2f} frames/s through identify_image "
+                f"({per_frame * 1e3:6.1f} ms a frame, {f['cores']} cores); ")
+        if mode == 'virtual':  # compute-bound: whatever is not the detector is overhead
+            line += f"outside detectMultiScale: {(1 - busy) * 100:4.1f}% of wall time"
+        else:  # paced by the 10 Hz timer: the rest is idle time, not overhead
+            line += f"detectMultiScale busy {busy * 100:4.1f}% of wall time"
+        print(line)
     print('target: outside detectMultiScale < 5% (virtual time, compute-bound)')
 
 

@@ -17,6 +17,7 @@ BUILTIN = {
         "labkit.demos.minimal:publisher_main",
     ("examples_rclcpp_minimal_subscriber", "subscriber_member_function"):
         "labkit.demos.minimal:subscriber_main",
+    ("rqt_graph", "rqt_graph"): "labkit.viz.graph_view:main",
 }
 
 _extra = {}

@@ -22,6 +22,8 @@ def _register_extensions():
     compat.register_alias('ament_index_python', 'labkit.ament.ament_index_python')
     compat.register_alias('launch', 'labkit.launch')
     compat.register_alias('launch_ros', 'labkit.launch_ros')
+    from labkit.cli.ros2 import register_noun
+    register_noun('launch', 'labkit.launch.cli', 'Run a launch file')
     from labkit.ament import magics as ament_magics
     for name, fn in ament_magics.MAGICS.items():
         magics.register(name, fn)

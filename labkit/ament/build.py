@@ -100,7 +100,7 @@ def _common_install(ctx, with_manifest, with_marker):
     """What every package gets: colcon-core's package list and environment hooks."""
     pkg = ctx.pkg
     share = os.path.join(ctx.prefix, 'share', pkg.name)
-    run_deps = sorted(pkg.deps.get('run', set()) | pkg.deps.get('build', set()))
+    run_deps = sorted(pkg.deps.get('run', set()))
     _write(os.path.join(ctx.prefix, 'share', 'colcon-core', 'packages', pkg.name),
            ':'.join(run_deps))
     hooks = ['share/%s/hook/ament_prefix_path.dsv' % pkg.name]

@@ -187,6 +187,59 @@ def _select(args, io, clock, skip_dirs=()):
     return ordered, [p for p in ordered if p.name in selected]
 
 
+def _underlay_packages():
+    """[(name, shown path, run dependencies)] of packages in sourced prefixes and /opt/ros."""
+    from labkit.ament import files, index
+    found = []
+    for prefix in index.prefixes():
+        for name in index.resources('packages', prefix):
+            deps_file = os.path.join(prefix, 'share', 'colcon-core', 'packages', name)
+            try:
+                with open(deps_file, encoding='utf-8') as f:
+                    deps = {d for d in f.read().strip().split(':') if d}
+            except OSError:
+                deps = set()
+            found.append((name, files.display(prefix), deps))
+    # the binary install: the `desktop` metapackage depends on every bundled package
+    for name in sorted(index.bundled_package_names()):
+        found.append((name, index.SHOWN_INSTALL_PREFIX, set()))
+    found.append(('desktop', index.SHOWN_INSTALL_PREFIX, index.bundled_package_names()))
+    return found
+
+
+def _override_check(args, selected, install_base, io, clock):
+    """colcon-override-check: overriding an underlay package others depend on warns."""
+    names = {p.name for p in selected}
+    underlay = _underlay_packages()
+    reverse = {}
+    for name, path, deps in underlay:
+        if name in names:
+            continue    # being rebuilt: its own dependencies no longer matter
+        for dep in deps & names:
+            reverse.setdefault(dep, set()).add(name)
+    paths = {}
+    for name, path, _ in underlay:
+        if name in names and path not in paths.get(name, []):
+            paths.setdefault(name, []).append(path)
+    overriding = sorted(n for n in paths if reverse.get(n) and
+                        n not in (args.allow_overriding or []))
+    if not overriding:
+        return
+    io.eprint(
+        f'[{clock.now():.3f}s] WARNING:colcon.colcon_core.package_selection:Some selected '
+        'packages are already built in one or more underlay workspaces:\n\t' +
+        '\n\t'.join(f"'{n}' is in: " + ', '.join(paths[n]) for n in overriding) +
+        '\nIf a package in a merged underlay workspace is overridden and it installs headers, '
+        'then all packages in the overlay must sort their include directories by workspace '
+        'order. Failure to do so may result in build failures or undefined behavior at run '
+        'time.\nIf the overridden package is used by another package in any underlay, then '
+        'the overriding package in the overlay must be API and ABI compatible or undefined '
+        'behavior at run time may occur.\n\nIf you understand the risks and want to override '
+        'a package anyways, add the following to the command line:\n\t--allow-overriding ' +
+        ' '.join(overriding) + '\n\nThis may be promoted to an error in a future release of '
+        'colcon-override-check.')
+
+
 def list_verb(args, io, clock):
     ordered, selected = _select(args, io, clock)
     if not args.topological_order:
@@ -212,6 +265,7 @@ def build_verb(args, io, clock):
     log_base = os.path.abspath(args.log_base)
     skip = (build_base, install_base, log_base)
     ordered, selected = _select(args, io, clock, skip)
+    _override_check(args, selected, install_base, io, clock)
     direct = '+' in ''.join(h for h in args.event_handlers if h.startswith('console_direct'))
 
     for base in (build_base, install_base, log_base):

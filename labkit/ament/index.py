@@ -84,7 +84,14 @@ def get_package_prefix(package_name):
             return os.path.dirname(registry.BUNDLED_SHARE)     # <prefix>/share/<pkg>/msg
         return BUNDLED_PREFIX
     raise PackageNotFoundError(
-        "package '{}' not found, searching: {}".format(package_name, prefixes()))
+        "package '{}' not found, searching: {}".format(package_name, search_paths_shown()))
+
+
+def search_paths_shown():
+    """AMENT_PREFIX_PATH as a terminal shows it: the workspaces, then /opt/ros/humble."""
+    from labkit.ament import files
+    shown = [files.display(p) for p in prefixes()]
+    return shown + ([SHOWN_INSTALL_PREFIX] if SHOWN_INSTALL_PREFIX not in shown else [])
 
 
 def get_package_share_directory(package_name):

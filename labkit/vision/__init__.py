@@ -5,7 +5,10 @@ while the labkit import hook is active (ARCHITECTURE.md, extension points).
 """
 import os
 
-SAMPLE_CLIP = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'book', 'part2_facer', 'media', 'facer_sample.avi'))
+# the book's sample camera clip (book/part2_facer/media, made by make_sample_clip.py)
+SAMPLE_CLIP = os.path.normpath(os.path.join(
+    os.path.dirname(os.path.abspath(__file__)), '..', '..',
+    'book', 'part2_facer', 'media', 'facer_sample.avi'))
 
 
 def register():

@@ -55,6 +55,9 @@ class PNG(bytes):
     def _repr_png_(self):
         return bytes(self)
 
+    def __repr__(self):
+        return f"<PNG image, {len(self)} bytes>"
+
 
 def png_bytes(image):
     buf = io.BytesIO()

@@ -180,3 +180,30 @@ def test_parameter_description(virtual):
     assert 'Parameter name: timer_period' in out
     assert 'Type: double' in out
     assert 'Description: frame_image 话题的发布周期（秒）' in out
+
+
+def test_no_camera_reports_camera_off(tester, tmp_path):
+    from facer_interfaces.action import CameraState
+    from rclpy.action import ActionClient
+    from sensor_msgs.msg import Image
+    node, executor = tester
+    missing = str(tmp_path / 'no_such_clip.avi')
+    camera = _start('facer_input', 'capture_image', '-p', f'source:={missing}')
+    assert f"[capture_image]: 无法打开图像来源 '{missing}'" in camera.output[0]
+    frames = []
+    node.create_subscription(Image, 'frame_image', frames.append, 10)
+    client = ActionClient(node, CameraState, 'camera_state')
+    assert client.wait_for_server(timeout_sec=2.0)
+    feedback = []
+    goal_future = client.send_goal_async(CameraState.Goal(start=True),
+                                         feedback_callback=lambda f: feedback.append(
+                                             f.feedback.state))
+    executor.spin_until_future_complete(goal_future, timeout_sec=2.0)
+    result_future = goal_future.result().get_result_async()
+    executor.spin_until_future_complete(result_future, timeout_sec=10.0)
+    assert feedback == ['摄像头关闭'] * 10 and frames == []
+    # pointing `source` at the clip at run time opens it
+    result = labkit.ros2('param set /capture_image source ' + SAMPLE_CLIP)
+    assert result.stdout == 'Set parameter successful\n', result.stderr
+    executor.spin_until_future_complete(_never(), timeout_sec=0.55)
+    assert len(frames) == 5

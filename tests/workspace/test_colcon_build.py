@@ -144,7 +144,13 @@ def test_overlay_wins(facer, tmp_path):
                             modules={'capture_image': facer_ws.CAPTURE.replace(
                                 'VERSION 1', 'OVERLAY')})
     os.chdir(overlay)
-    assert build('build').returncode == 0
+    r = build('build')
+    assert r.returncode == 0
+    # facer_bringup (underlay) needs facer_input: colcon-override-check warns
+    assert "WARNING:colcon.colcon_core.package_selection:Some selected packages are already " \
+        "built in one or more underlay workspaces:\n\t'facer_input' is in: " in r.stderr
+    assert '\t--allow-overriding facer_input\n' in r.stderr
+    assert build('build --allow-overriding facer_input').stderr == ''
     source.run('install/setup.bash')
     assert labkit.ros2('pkg prefix facer_input').stdout.strip() == \
         str(overlay / 'install' / 'facer_input')
@@ -166,3 +172,32 @@ def test_colcon_list(facer):
     assert names.index('facer_interfaces') < names.index('facer_detect')
     r = colcon.run_command('list')
     assert 'facer_input\tsrc/facer_input\t(ros.ament_python)' in r.stdout
+
+
+def test_override_warnings_like_colcon_override_check(facer):
+    build('build')
+    source.run('install/setup.bash')
+    assert build('build').stderr == ''          # rebuilding everything overrides nothing
+    r = build('build --packages-select facer_input')
+    assert "'facer_input' is in: " + str(facer / 'install' / 'facer_input') in r.stderr
+    assert build('build --packages-select facer_bringup').stderr == ''   # a leaf: no warning
+
+
+def test_overriding_a_bundled_package(ws):
+    import facer_ws
+    facer_ws.python_package(str(ws / 'src'), 'turtlesim', [])
+    r = build('build')
+    assert "\t'turtlesim' is in: /opt/ros/humble\n" in r.stderr
+    assert r.stdout.endswith('Summary: 1 package finished [0.99s]\n')
+
+
+def test_magics_are_registered_and_print_like_a_terminal(facer, capsys):
+    from labkit.cli import magics
+    assert {'colcon', 'source', 'rosdep'} <= set(magics.MAGICS)
+    magics.MAGICS['colcon']('build --packages-select facer_input')
+    out = capsys.readouterr().out
+    assert out.startswith('Starting >>> facer_input\n')
+    magics.MAGICS['source']('install/setup.bash')
+    assert labkit.ros2('pkg executables facer_input').stdout == 'facer_input capture_image\n'
+    magics.MAGICS['rosdep']('install -i --from-path src --rosdistro humble -y')
+    assert capsys.readouterr().out.endswith('#All required rosdeps installed successfully\n')

@@ -67,9 +67,11 @@ def num_channels(encoding):
 
 
 def bit_depth(encoding):
-    if encoding in ('mono8', 'bgr8', 'rgb8', 'bgra8', 'rgba8') or (encoding in BAYER and encoding.endswith('8')):
+    if encoding in BAYER:
+        return 8 if encoding.endswith('8') else 16
+    if encoding in ('mono8', 'bgr8', 'rgb8', 'bgra8', 'rgba8'):
         return 8
-    if encoding in ('mono16', 'bgr16', 'rgb16', 'bgra16', 'rgba16') or encoding in BAYER:
+    if encoding in ('mono16', 'bgr16', 'rgb16', 'bgra16', 'rgba16'):
         return 16
     for prefix in _ABSTRACT_PREFIXES:
         if encoding.startswith(prefix) and (encoding == prefix or _atoi(encoding[len(prefix):])):
@@ -143,12 +145,13 @@ def conversion_codes(src, dst):
             raise EncodingError('[%s] is not a color format. but [%s] is. '
                                 'The conversion does not make sense' % (src, dst))
         if not same_channels:
-            raise EncodingError('[%s] and [%s] do not have the same number of channel' % (src, dst))
+            raise EncodingError('[%s] and [%s] do not have the same number of channel'
+                                % (src, dst))
         return [SAME_FORMAT]
     if not dst_colour:
         if not same_channels:
-            raise EncodingError('[%s] is a color format but [%s] is not so they must have the same '
-                                'OpenCV type, CV_8UC3, CV16UC1 ....' % (src, dst))
+            raise EncodingError('[%s] is a color format but [%s] is not so they must have '
+                                'the same OpenCV type, CV_8UC3, CV16UC1 ....' % (src, dst))
         return [SAME_FORMAT]
     key = (_family(src), _family(dst))
     if key not in _CODES:

@@ -1,0 +1,22 @@
+"""launch (the ROS 2 launch system) on labkit: the core of it.
+
+Launch files run unchanged: `LaunchDescription`, `launch.actions`,
+`launch.substitutions`, `launch.conditions`, `launch.launch_description_sources`,
+and `launch_ros.actions.Node` (labkit.launch_ros). `LaunchService` (service.py)
+visits the description and starts each node as a labkit process with the
+console lines of `ros2 launch`. Event handlers, XML/YAML launch files and
+composable nodes come later (issue 6); they fit in as more actions.
+"""
+from labkit.launch import actions, conditions, launch_description_sources, substitutions  # noqa
+from labkit.launch.action import Action, LaunchDescriptionEntity  # noqa: F401
+from labkit.launch.launch_context import LaunchContext  # noqa: F401
+from labkit.launch.launch_description import LaunchDescription  # noqa: F401
+from labkit.launch.service import LaunchService  # noqa: F401
+from labkit.launch.substitution import Substitution  # noqa: F401
+from labkit.launch.utilities import perform_substitutions  # noqa: F401
+
+SomeSubstitutionsType = object  # typing aliases used in annotations only
+
+__all__ = ['Action', 'LaunchContext', 'LaunchDescription', 'LaunchDescriptionEntity',
+           'LaunchService', 'Substitution', 'actions', 'conditions',
+           'launch_description_sources', 'substitutions']

@@ -1,0 +1,225 @@
+"""launch.actions: the actions a launch file declares (the core set; more come with issue 6)."""
+import os
+
+from labkit.launch.action import Action
+from labkit.launch.utilities import normalize_to_list_of_substitutions, perform
+
+
+class DeclareLaunchArgument(Action):
+    """A launch argument: `name:=value` on the command line, or its default."""
+
+    def __init__(self, name, *, default_value=None, description=None, choices=None, **kwargs):
+        super().__init__(**kwargs)
+        self.__name = name
+        self.__default = None if default_value is None else \
+            normalize_to_list_of_substitutions(default_value)
+        self.__description = description if description is not None else \
+            'no description given'
+        self.__choices = list(choices) if choices is not None else None
+        if self.__choices is not None and default_value is not None and \
+                isinstance(default_value, str) and default_value not in self.__choices:
+            raise RuntimeError('Provided default_value "{}" is not in provided choices "{}".'
+                               .format(default_value, self.__choices))
+        self._conditionally_included = False
+
+    @property
+    def name(self):
+        return self.__name
+
+    @property
+    def default_value(self):
+        return self.__default
+
+    @property
+    def description(self):
+        return self.__description
+
+    @property
+    def choices(self):
+        return self.__choices
+
+    def execute(self, context):
+        if self.__name not in context.launch_configurations:
+            if self.__default is None:
+                context.launch_service.log_error(
+                    'Required launch argument "{}" (description: "{}") was not provided'
+                    .format(self.__name, self.__description))
+                raise RuntimeError(
+                    'Required launch argument "{}" was not provided.'.format(self.__name))
+            context.launch_configurations[self.__name] = perform(context, self.__default)
+        if self.__choices is not None:
+            value = context.launch_configurations[self.__name]
+            if value not in self.__choices:
+                message = ('Argument "{}" provided value "{}" is not valid. Valid options '
+                           'are: {}'.format(self.__name, value, self.__choices))
+                context.launch_service.log_error(message)
+                raise RuntimeError(message)
+
+
+class SetLaunchConfiguration(Action):
+    def __init__(self, name, value, **kwargs):
+        super().__init__(**kwargs)
+        self.__name, self.__value = name, value
+
+    def execute(self, context):
+        context.launch_configurations[perform(context, self.__name)] = \
+            perform(context, self.__value)
+
+
+class PushLaunchConfigurations(Action):
+    def execute(self, context):
+        context._push_launch_configurations()
+
+
+class PopLaunchConfigurations(Action):
+    def execute(self, context):
+        context._pop_launch_configurations()
+
+
+class _SetLocals(Action):
+    def __init__(self, values):
+        super().__init__()
+        self.values = values
+
+    def execute(self, context):
+        context.extend_locals(self.values)
+
+
+class LogInfo(Action):
+    def __init__(self, *, msg, **kwargs):
+        super().__init__(**kwargs)
+        self.__msg = msg
+
+    def execute(self, context):
+        context.launch_service.log_info(perform(context, self.__msg), logger='launch.user')
+
+
+class GroupAction(Action):
+    """Actions in a scope: launch configurations set inside do not leak out (scoped=True)."""
+
+    def __init__(self, actions, *, scoped=True, forwarding=True, launch_configurations=None,
+                 **kwargs):
+        super().__init__(**kwargs)
+        self.__actions = list(actions)
+        self.__scoped = scoped
+        self.__forwarding = forwarding
+        self.__configs = dict(launch_configurations or {})
+
+    def get_sub_entities(self):
+        return list(self.__actions)
+
+    def execute(self, context):
+        entities = []
+        if self.__scoped:
+            entities.append(PushLaunchConfigurations())
+            if not self.__forwarding:
+                entities.append(_ClearLaunchConfigurations())
+        entities += [SetLaunchConfiguration(k, v) for k, v in self.__configs.items()]
+        entities += self.__actions
+        if self.__scoped:
+            entities.append(PopLaunchConfigurations())
+        return entities
+
+
+class _ClearLaunchConfigurations(Action):
+    def execute(self, context):
+        context.launch_configurations.clear()
+
+
+class IncludeLaunchDescription(Action):
+    """Another launch file's description, with its arguments set first."""
+
+    def __init__(self, launch_description_source, *, launch_arguments=None, **kwargs):
+        super().__init__(**kwargs)
+        from labkit.launch.launch_description_sources import (AnyLaunchDescriptionSource,
+                                                              LaunchDescriptionSource)
+        if not isinstance(launch_description_source, LaunchDescriptionSource):
+            launch_description_source = AnyLaunchDescriptionSource(launch_description_source)
+        self.__source = launch_description_source
+        self.__arguments = list(launch_arguments.items()) if isinstance(
+            launch_arguments, dict) else list(launch_arguments or [])
+
+    @property
+    def launch_description_source(self):
+        return self.__source
+
+    @property
+    def launch_arguments(self):
+        return list(self.__arguments)
+
+    def execute(self, context):
+        description = self.__source.get_launch_description(context)
+        location = self.__source.location
+        for name, value in self.__arguments:
+            context.launch_configurations[perform(context, name)] = perform(context, value)
+        declared = [a.name for a in description.get_launch_arguments()]
+        for arg in description.get_launch_arguments():
+            if arg.default_value is None and arg.name not in context.launch_configurations:
+                raise RuntimeError(
+                    "Included launch description missing required argument '{}' "
+                    "(description: '{}'), given: [{}]".format(
+                        arg.name, arg.description,
+                        ', '.join(sorted(context.launch_configurations))))
+        del declared
+        saved = dict(context.locals)
+        return [
+            _SetLocals({'current_launch_file_path': location,
+                        'current_launch_file_directory': os.path.dirname(location)}),
+            description,
+            _SetLocals(saved),
+        ]
+
+
+class OpaqueFunction(Action):
+    """Call a Python function at launch time; it may return more actions."""
+
+    def __init__(self, *, function, args=None, kwargs=None, **left_over):
+        super().__init__(**left_over)
+        self.__function, self.__args, self.__kwargs = function, args or [], kwargs or {}
+
+    def execute(self, context):
+        return self.__function(context, *self.__args, **self.__kwargs)
+
+
+class TimerAction(Action):
+    """Run actions after `period` seconds (world time: simulated in virtual mode)."""
+
+    def __init__(self, *, period, actions, cancel_on_shutdown=True, **kwargs):
+        super().__init__(**kwargs)
+        self.__period = period
+        self.__actions = list(actions)
+
+    def execute(self, context):
+        period = float(perform(context, self.__period)) if not isinstance(
+            self.__period, (int, float)) else float(self.__period)
+        context.launch_service.add_timer(period, self.__actions)
+
+
+class SetEnvironmentVariable(Action):
+    def __init__(self, name, value, **kwargs):
+        super().__init__(**kwargs)
+        self.__name, self.__value = name, value
+
+    def execute(self, context):
+        os.environ[perform(context, self.__name)] = perform(context, self.__value)
+
+
+class ExecuteProcess(Action):
+    """A command; labkit runs `ros2 run <pkg> <exe> ...` commands (other programs: no)."""
+
+    def __init__(self, *, cmd, name=None, output='log', additional_env=None, shell=False,
+                 emulate_tty=False, cwd=None, **kwargs):
+        super().__init__(**kwargs)
+        self.cmd = [normalize_to_list_of_substitutions(c) for c in cmd]
+        self.name = name
+        self.output = output
+
+    def execute(self, context):
+        argv = [perform(context, c) for c in self.cmd]
+        if argv[:2] != ['ros2', 'run'] or len(argv) < 4:
+            raise RuntimeError("labkit can only launch ROS executables (`ros2 run <package> "
+                               "<executable>`), not '{}'".format(' '.join(argv)))
+        context.launch_service.start_node(
+            package=argv[2], executable=argv[3], argv=argv[4:],
+            name=perform(context, self.name) if self.name else None,
+            output=self.output, cmd=argv)

@@ -1,0 +1,23 @@
+"""LaunchContext: launch configurations (the values of launch arguments) and scopes."""
+
+
+class LaunchContext:
+    def __init__(self, argv=None, noninteractive=True):
+        self.argv = list(argv or [])
+        self.noninteractive = noninteractive
+        self.launch_configurations = {}
+        self.locals = {}                # e.g. current_launch_file_directory
+        self._stack = []
+        self.launch_service = None      # the runner that starts processes
+
+    def _push_launch_configurations(self):
+        self._stack.append((dict(self.launch_configurations), dict(self.locals)))
+
+    def _pop_launch_configurations(self):
+        self.launch_configurations, self.locals = self._stack.pop()
+
+    def extend_locals(self, values):
+        self.locals.update(values)
+
+    def perform_substitution(self, substitution):
+        return substitution.perform(self)

@@ -1,0 +1,88 @@
+"""Where an included launch description comes from (a Python launch file)."""
+import importlib.util
+import os
+
+
+class InvalidPythonLaunchFileError(Exception):
+    pass
+
+
+class InvalidLaunchFileError(Exception):
+    pass
+
+
+def load_python_launch_file_as_module(path):
+    name = os.path.basename(path).replace('.', '_')
+    spec = importlib.util.spec_from_file_location(name, path)
+    if spec is None:
+        raise InvalidLaunchFileError(
+            "The launch file may have a syntax error, or its format is unknown")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def get_launch_description_from_python_launch_file(path):
+    module = load_python_launch_file_as_module(path)
+    if not hasattr(module, 'generate_launch_description'):
+        raise InvalidPythonLaunchFileError(
+            "launch file at '{}' does not contain the required function '{}'".format(
+                path, 'generate_launch_description()'))
+    return module.generate_launch_description()
+
+
+def get_launch_description_from_any_launch_file(path):
+    if path.endswith(('.xml', '.yaml', '.yml')):
+        raise InvalidLaunchFileError(
+            'labkit runs Python launch files only (not yet: {})'.format(
+                os.path.basename(path)))
+    return get_launch_description_from_python_launch_file(path)
+
+
+class LaunchDescriptionSource:
+    def __init__(self, launch_description=None, location='<script>', method='interpreted'):
+        self._launch_description = launch_description
+        self._location = location
+        self._method = method
+
+    @property
+    def location(self):
+        return self._location
+
+    def try_get_launch_description_without_context(self):
+        return self._launch_description
+
+    def get_launch_description(self, context):
+        return self._launch_description
+
+
+class PythonLaunchDescriptionSource(LaunchDescriptionSource):
+    def __init__(self, launch_file_path):
+        super().__init__(None, launch_file_path, 'interpreted python launch file')
+        self._path = launch_file_path
+
+    def get_launch_description(self, context):
+        from labkit.launch.utilities import perform
+        if self._launch_description is None:
+            self._location = perform(context, self._path)
+            self._launch_description = get_launch_description_from_python_launch_file(
+                self._location)
+        return self._launch_description
+
+    def try_get_launch_description_without_context(self):
+        from labkit.launch.utilities import is_a_substitution
+        if self._launch_description is None and not is_a_substitution(self._path):
+            self._location = self._path
+            self._launch_description = get_launch_description_from_python_launch_file(
+                self._path)
+        return self._launch_description
+
+
+class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):
+    def get_launch_description(self, context):
+        from labkit.launch.utilities import perform
+        if self._launch_description is None:
+            self._location = perform(context, self._path)
+            self._launch_description = get_launch_description_from_any_launch_file(
+                self._location)
+        return self._launch_description

@@ -1,0 +1,122 @@
+"""launch.substitutions: the text pieces a launch file computes when it runs."""
+import os
+
+from labkit.launch.substitution import Substitution, SubstitutionFailure  # noqa: F401
+from labkit.launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+
+
+class TextSubstitution(Substitution):
+    def __init__(self, *, text):
+        self.text = text
+
+    def describe(self):
+        return "'{}'".format(self.text)
+
+    def perform(self, context):
+        return self.text
+
+
+class LaunchConfiguration(Substitution):
+    """The value of a launch argument / configuration (`LaunchConfiguration('camera')`)."""
+
+    def __init__(self, variable_name, *, default=None):
+        self.variable_name = normalize_to_list_of_substitutions(variable_name)
+        self.default = None if default is None else normalize_to_list_of_substitutions(
+            default if not isinstance(default, (list, tuple)) or not default or
+            isinstance(default[0], (str, Substitution)) else [str(default)])
+
+    def describe(self):
+        return 'LaunchConfig({})'.format(' + '.join(s.describe() for s in self.variable_name))
+
+    def perform(self, context):
+        name = perform_substitutions(context, self.variable_name)
+        if name in context.launch_configurations:
+            return context.launch_configurations[name]
+        if self.default is None:
+            raise SubstitutionFailure("launch configuration '{}' does not exist".format(name))
+        return perform_substitutions(context, self.default)
+
+
+class EnvironmentVariable(Substitution):
+    def __init__(self, name, *, default_value=None):
+        self.name = normalize_to_list_of_substitutions(name)
+        self.default_value = None if default_value is None else \
+            normalize_to_list_of_substitutions(default_value)
+
+    def describe(self):
+        return 'EnvVar({})'.format(' + '.join(s.describe() for s in self.name))
+
+    def perform(self, context):
+        name = perform_substitutions(context, self.name)
+        value = os.environ.get(name)
+        if value is None:
+            if self.default_value is None:
+                raise SubstitutionFailure(
+                    "environment variable '{}' does not exist".format(name))
+            return perform_substitutions(context, self.default_value)
+        return value
+
+
+class PathJoinSubstitution(Substitution):
+    def __init__(self, substitutions):
+        self.substitutions = [normalize_to_list_of_substitutions(s) for s in substitutions]
+
+    def describe(self):
+        return "PathJoin('{}')".format(' + '.join(
+            s.describe() for part in self.substitutions for s in part))
+
+    def perform(self, context):
+        return os.path.join(*[perform_substitutions(context, s) for s in self.substitutions])
+
+
+class PythonExpression(Substitution):
+    def __init__(self, expression):
+        self.expression = normalize_to_list_of_substitutions(expression)
+
+    def describe(self):
+        return 'PythonExpr({})'.format(' + '.join(s.describe() for s in self.expression))
+
+    def perform(self, context):
+        import math
+        return str(eval(perform_substitutions(context, self.expression), math.__dict__.copy()))
+
+
+class ThisLaunchFileDir(Substitution):
+    def describe(self):
+        return 'ThisLaunchFileDir()'
+
+    def perform(self, context):
+        if 'current_launch_file_directory' not in context.locals:
+            raise SubstitutionFailure(
+                'ThisLaunchFileDir used outside of a launch file (in a script)')
+        return context.locals['current_launch_file_directory']
+
+
+class ThisLaunchFile(Substitution):
+    def describe(self):
+        return 'ThisLaunchFile()'
+
+    def perform(self, context):
+        if 'current_launch_file_path' not in context.locals:
+            raise SubstitutionFailure('ThisLaunchFile used outside of a launch file (in a script)')
+        return context.locals['current_launch_file_path']
+
+
+class AndSubstitution(Substitution):
+    def __init__(self, left, right):
+        self.left = normalize_to_list_of_substitutions(left)
+        self.right = normalize_to_list_of_substitutions(right)
+
+    def perform(self, context):
+        from labkit.launch.conditions import evaluate_condition_expression
+        return str(evaluate_condition_expression(context, self.left) and
+                   evaluate_condition_expression(context, self.right)).lower()
+
+
+class NotSubstitution(Substitution):
+    def __init__(self, value):
+        self.value = normalize_to_list_of_substitutions(value)
+
+    def perform(self, context):
+        from labkit.launch.conditions import evaluate_condition_expression
+        return str(not evaluate_condition_expression(context, self.value)).lower()

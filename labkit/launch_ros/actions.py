@@ -1,0 +1,125 @@
+"""launch_ros.actions.Node: a ROS node (a `ros2 run` executable) started by launch."""
+import os
+import tempfile
+
+import yaml
+
+from labkit.launch.action import Action
+from labkit.launch.utilities import is_a_substitution, normalize_to_list_of_substitutions, \
+    perform
+
+__all__ = ['Node']
+
+
+def executable_path(package, executable):
+    """Where ros2run would find it: <prefix>/lib/<package>/<executable> (as printed)."""
+    from labkit import executables
+    from labkit.ament import files, index
+    try:
+        prefix = files.display(index.package_prefix(package))
+    except LookupError:
+        if package not in index.bundled_package_names():
+            raise index.PackageNotFoundError(
+                "package '{}' not found, searching: {}".format(package, index.search_paths_shown()))
+        prefix = index.SHOWN_INSTALL_PREFIX
+    libexec = os.path.join(prefix, 'lib', package)
+    if executables.lookup(package, executable) is None:
+        raise RuntimeError(
+            "executable '{}' not found on the libexec directory '{}' ".format(
+                executable, libexec))
+    return os.path.join(libexec, executable)
+
+
+class Node(Action):
+    def __init__(self, *, executable, package=None, name=None, namespace=None, exec_name=None,
+                 parameters=None, remappings=None, ros_arguments=None, arguments=None,
+                 output='log', emulate_tty=False, respawn=False, additional_env=None,
+                 node_executable=None, node_name=None, **kwargs):
+        super().__init__(condition=kwargs.pop('condition', None))
+        self.__package = package
+        self.__executable = executable if node_executable is None else node_executable
+        self.__name = name if node_name is None else node_name
+        self.__namespace = namespace
+        self.__exec_name = exec_name
+        self.__parameters = list(parameters or [])
+        self.__remappings = list(remappings or [])
+        self.__ros_arguments = list(ros_arguments or [])
+        self.__arguments = list(arguments or [])
+        self.__output = output
+        self.emulate_tty = emulate_tty
+
+    @property
+    def node_package(self):
+        return self.__package
+
+    @property
+    def node_executable(self):
+        return self.__executable
+
+    @property
+    def node_name(self):
+        return self.__name
+
+    def execute(self, context):
+        service = context.launch_service
+        package = perform(context, self.__package)
+        executable = perform(context, self.__executable)
+        path = executable_path(package, executable)
+        argv = [perform(context, a) for a in self.__arguments]
+        ros_args = [perform(context, a) for a in self.__ros_arguments]
+        if self.__name is not None:
+            ros_args += ['-r', '__node:=' + perform(context, self.__name)]
+        if self.__namespace is not None:
+            ns = perform(context, self.__namespace)
+            ros_args += ['-r', '__ns:=' + (ns if ns.startswith('/') else '/' + ns)]
+        for entry in self.__parameters:
+            if isinstance(entry, dict):
+                ros_args += ['--params-file', self._params_file(context, entry, service)]
+            else:
+                path_ = perform(context, entry)
+                if not os.path.isfile(path_):
+                    raise RuntimeError(
+                        "Parameter file path is not a file: {}".format(path_))
+                ros_args += ['--params-file', path_]
+        for src, dst in self.__remappings:
+            ros_args += ['-r', '{}:={}'.format(perform(context, src), perform(context, dst))]
+        full = argv + (['--ros-args'] + ros_args if ros_args else [])
+        exec_name = perform(context, self.__exec_name) if self.__exec_name else None
+        service.start_node(package=package, executable=executable, argv=full,
+                           output=perform(context, self.__output), cmd=[path, *full],
+                           exec_name=exec_name)
+
+    @staticmethod
+    def _params_file(context, params, service):
+        """A dict of parameters -> a temporary params file (`/**: ros__parameters:`)."""
+        values = {}
+
+        def flatten(prefix, value):
+            if isinstance(value, dict):
+                for k, v in value.items():
+                    flatten(f'{prefix}{perform(context, k)}.', v)
+            else:
+                values[prefix[:-1]] = _evaluate(context, value)
+        flatten('', params)
+        fd, path = tempfile.mkstemp(prefix='launch_params_')
+        with os.fdopen(fd, 'w', encoding='utf-8') as f:
+            yaml.safe_dump({'/**': {'ros__parameters': values}}, f, default_flow_style=False)
+        service.add_params_file(path)
+        return path
+
+
+def _evaluate(context, value):
+    """A substitution's text is read as YAML (so '3' is an int), like launch_ros does."""
+    if is_a_substitution(value):
+        text = perform(context, value)
+        try:
+            parsed = yaml.safe_load(text)
+        except yaml.YAMLError:
+            return text
+        return parsed if isinstance(parsed, (bool, int, float, str, list)) else text
+    if isinstance(value, (list, tuple)):
+        return [_evaluate(context, v) for v in value]
+    return value
+
+
+del normalize_to_list_of_substitutions

@@ -1,0 +1,61 @@
+"""xacro (the PyPI package) with `$(find pkg)` resolved through labkit's package index.
+
+`process(path, mappings)` returns the expanded URDF text; errors become
+`URDFError` naming the file and what xacro complained about.
+"""
+import contextlib
+import io
+import sys
+
+from labkit.robots.urdf import URDFError
+
+
+@contextlib.contextmanager
+def _labkit_find():
+    from xacro import substitution_args
+    from labkit.robots import packages
+    original = substitution_args._eval_find
+    substitution_args._eval_find = packages.share_directory
+    try:
+        yield
+    finally:
+        substitution_args._eval_find = original
+
+
+def process(path, mappings=None):
+    """Expand a .xacro file (like `xacro path arg:=value`) into URDF text."""
+    import xacro
+    err = io.StringIO()
+    with _labkit_find(), contextlib.redirect_stderr(err):
+        try:
+            doc = xacro.process_file(str(path), mappings=dict(mappings or {}))
+        except Exception as exc:   # xacro raises XacroException, XML errors, NameError ...
+            detail = " ".join(str(exc).split()) or type(exc).__name__
+            raise URDFError(f"Error processing xacro file '{path}': {detail}") from None
+    return doc.toprettyxml(indent="  ")
+
+
+def main(args=None):
+    """`xacro FILE [name:=value ...] [-o OUT]`: print the expanded URDF, like the xacro command."""
+    argv = list(sys.argv[1:] if args is None else args)
+    out = None
+    if "-o" in argv:
+        i = argv.index("-o")
+        out = argv[i + 1]
+        del argv[i:i + 2]
+    files = [a for a in argv if ":=" not in a]
+    mappings = dict(a.split(":=", 1) for a in argv if ":=" in a)
+    if len(files) != 1:
+        sys.stderr.write("usage: xacro [-o OUT] input [mappings ...]\n")
+        return 2
+    try:
+        text = process(files[0], mappings)
+    except URDFError as exc:
+        sys.stderr.write(f"{exc}\n")
+        return 2
+    if out:
+        with open(out, "w", encoding="utf-8") as handle:
+            handle.write(text)
+    else:
+        sys.stdout.write(text)
+    return 0

@@ -1,0 +1,165 @@
+"""rosbag2_py and the bag files: Humble's layout, readable by `rosbags`."""
+import os
+import sqlite3
+import subprocess
+import sys
+import textwrap
+
+import pytest
+import yaml
+from rosbags.rosbag2 import Reader
+from rosbags.typesys import Stores, get_typestore
+
+import labkit.interfaces as ifc
+from labkit.bag import rosbag2_py
+from labkit.bag.metadata import format_bag_metadata, format_file_size, read_metadata
+from labkit.rclpy.serialization import deserialize_message, serialize_message
+
+EPOCH = 1704067200_000_000_000
+String = ifc.get_type('std_msgs/msg/String')
+Twist = ifc.get_type('geometry_msgs/msg/Twist')
+
+
+def _write(uri, storage_id='sqlite3', n=5):
+    writer = rosbag2_py.SequentialWriter()
+    writer.open(rosbag2_py._storage.StorageOptions(uri=uri, storage_id=storage_id),
+                rosbag2_py._storage.ConverterOptions('', ''))
+    writer.create_topic(rosbag2_py._storage.TopicMetadata(
+        name='chatter', type='std_msgs/msg/String', serialization_format='cdr'))
+    writer.create_topic(rosbag2_py.TopicMetadata('/cmd', 'geometry_msgs/msg/Twist', 'cdr'))
+    for k in range(n):
+        writer.write('chatter', serialize_message(String(data=f'Hello World: {k}')),
+                     EPOCH + k * 500_000_000)
+    t = Twist()
+    t.linear.x = 2.0
+    writer.write('/cmd', ifc.serialize(t), EPOCH + 250_000_000)
+    return writer
+
+
+def test_sqlite3_bag_has_humbles_layout(bag_dir):
+    _write('my_bag').close()
+    assert sorted(os.listdir('my_bag')) == ['metadata.yaml', 'my_bag_0.db3']
+    db = sqlite3.connect('my_bag/my_bag_0.db3')
+    tables = {r[0] for r in db.execute("SELECT name FROM sqlite_master WHERE type='table'")}
+    assert tables == {'schema', 'metadata', 'topics', 'messages'}
+    assert db.execute('SELECT schema_version FROM schema').fetchone() == (3,)
+    assert [r[0] for r in db.execute('SELECT name FROM topics ORDER BY id')] == ['chatter', '/cmd']
+    info = yaml.safe_load(open('my_bag/metadata.yaml'))['rosbag2_bagfile_information']
+    assert info['version'] == 5
+    assert info['storage_identifier'] == 'sqlite3'
+    assert info['message_count'] == 6
+    assert info['relative_file_paths'] == ['my_bag_0.db3']
+    assert info['files'][0]['message_count'] == 6
+    assert info['duration'] == {'nanoseconds': 2_000_000_000}
+    assert info['starting_time'] == {'nanoseconds_since_epoch': EPOCH}
+
+
+@pytest.mark.parametrize('storage_id', ['sqlite3', 'mcap'])
+def test_rosbags_reads_what_we_write(bag_dir, storage_id):
+    _write('b', storage_id).close()
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    with Reader('b') as reader:
+        got = [(c.topic, t, store.deserialize_cdr(d, c.msgtype)) for c, t, d in reader.messages()]
+    assert [g[0] for g in got] == ['chatter', '/cmd', 'chatter', 'chatter', 'chatter', 'chatter']
+    assert got[0][2].data == 'Hello World: 0'
+    assert got[1][2].linear.x == 2.0
+    assert got[-1][1] == EPOCH + 2_000_000_000
+
+
+@pytest.mark.parametrize('storage_id', ['sqlite3', 'mcap'])
+def test_sequential_reader_round_trip(bag_dir, storage_id):
+    _write('b', storage_id).close()
+    reader = rosbag2_py.SequentialReader()
+    reader.open(rosbag2_py.StorageOptions(uri='b', storage_id=''),
+                rosbag2_py.ConverterOptions('', ''))
+    topics = {t.name: t.type for t in reader.get_all_topics_and_types()}
+    assert topics == {'chatter': 'std_msgs/msg/String', '/cmd': 'geometry_msgs/msg/Twist'}
+    seen = []
+    while reader.has_next():
+        topic, data, t = reader.read_next()
+        cls = String if topic == 'chatter' else Twist
+        seen.append((topic, deserialize_message(data, cls), t))
+    assert len(seen) == 6
+    assert [s[2] for s in seen] == sorted(s[2] for s in seen)
+    assert seen[0][1] == String(data='Hello World: 0')
+    with pytest.raises(RuntimeError, match='Bag is at end'):
+        reader.read_next()
+    reader.set_filter(rosbag2_py.StorageFilter(topics=['/cmd']))
+    assert reader.read_next()[0] == '/cmd' and not reader.has_next()
+
+
+def test_rosbags_written_bag_is_readable(bag_dir):
+    from rosbags.rosbag2 import Writer
+    store = get_typestore(Stores.ROS2_HUMBLE)
+    with Writer('theirs', version=8) as w:
+        conn = w.add_connection('/chatter', 'std_msgs/msg/String', typestore=store)
+        w.write(conn, EPOCH, ifc.serialize(String(data='hi')))
+    reader = rosbag2_py.SequentialReader()
+    reader.open(rosbag2_py.StorageOptions(uri='theirs'), rosbag2_py.ConverterOptions())
+    assert reader.read_next() == ('/chatter', ifc.serialize(String(data='hi')), EPOCH)
+
+
+def test_writer_refuses_an_existing_bag(bag_dir):
+    os.mkdir('my_bag')
+    writer = rosbag2_py.SequentialWriter()
+    with pytest.raises(RuntimeError, match=r"Database directory already exists \(my_bag\)"):
+        writer.open(rosbag2_py.StorageOptions(uri='my_bag', storage_id='sqlite3'),
+                    rosbag2_py.ConverterOptions('', ''))
+
+
+def test_info_text_is_humbles(bag_dir):
+    _write('my_bag').close()
+    m = rosbag2_py.Info().read_metadata('my_bag', '')
+    lines = str(m).split('\n')
+    assert lines[0] == ''
+    assert lines[1] == 'Files:             my_bag_0.db3'
+    assert lines[2].startswith('Bag size:          ') and lines[2].endswith('KiB')
+    assert lines[3:] == [
+        'Storage id:        sqlite3',
+        'Duration:          2.000000000s',
+        'Start:             Jan  1 2024 00:00:00.000000000 (1704067200.000000000)',
+        'End:               Jan  1 2024 00:00:02.000000000 (1704067202.000000000)',
+        'Messages:          6',
+        'Topic information: Topic: chatter | Type: std_msgs/msg/String | Count: 5 | '
+        'Serialization Format: cdr',
+        '                   Topic: /cmd | Type: geometry_msgs/msg/Twist | Count: 1 | '
+        'Serialization Format: cdr',
+        '']
+
+
+def test_file_sizes_like_rosbag2():
+    assert format_file_size(0) == '0 B'
+    assert format_file_size(1023) == '1023 B'
+    assert format_file_size(233984) == '228.5 KiB'
+    assert format_file_size(5 * 1024 ** 3) == '5.0 GiB'
+
+
+def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
+    """The kernel dies mid-recording: committed batches stay, metadata.yaml describes them."""
+    script = textwrap.dedent('''
+        import os
+        import labkit.interfaces as ifc
+        from labkit.bag import rosbag2_py
+        String = ifc.get_type('std_msgs/msg/String')
+        w = rosbag2_py.SequentialWriter()
+        w.open(rosbag2_py.StorageOptions(uri='crash'), rosbag2_py.ConverterOptions())
+        w.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
+        for k in range(450):
+            w.write('/c', ifc.serialize(String(data=str(k))), 1000 + k)
+        os._exit(9)   # no close, no destructor, no atexit
+    ''')
+    subprocess.run([sys.executable, '-c', script], check=False, cwd=bag_dir)
+    m = read_metadata('crash')
+    assert m.message_count == 400  # two batches of 200 were committed
+    with Reader('crash') as reader:
+        assert sum(1 for _ in reader.messages()) == 400
+    os.remove('crash/metadata.yaml')  # even without it, info rebuilds what it can
+    m = rosbag2_py.Info().read_metadata('crash', '')
+    assert (m.message_count, m.starting_time, m.duration) == (400, 1000, 399)
+
+
+def test_format_bag_metadata_without_topics():
+    from labkit.bag.metadata import BagMetadata
+    text = format_bag_metadata(BagMetadata(storage_identifier='sqlite3'))
+    assert 'Files:             \n' in text
+    assert text.endswith('Topic information: \n')

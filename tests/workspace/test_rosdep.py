@@ -1,0 +1,56 @@
+"""rosdep over the bundled key tables: resolution, -i, unknown keys, honest output."""
+from labkit.ament import rosdep
+
+
+def test_install_ignore_src_resolves_every_key(facer):
+    r = rosdep.run_command('install -i --from-path src --rosdistro humble -y')
+    assert r.returncode == 0, r.text()
+    lines = r.stdout.splitlines()
+    assert lines[-1] == '#All required rosdeps installed successfully'
+    assert '#[apt] ros-humble-rclpy' in lines
+    assert '#[apt] python3-opencv' in lines           # facer_detect's exec_depend
+    assert '#[apt] ros-humble-rosidl-default-generators' in lines
+    assert not any('apt-get install' in line for line in lines)   # nothing pretends to install
+    assert not any('facer_' in line for line in lines)            # workspace keys skipped
+    same = rosdep.run_command('install --from-paths src -y --ignore-src')
+    assert same.stdout == r.stdout
+
+
+def test_without_ignore_src_workspace_packages_are_unknown_keys(facer):
+    r = rosdep.run_command('install --from-paths src -y')
+    assert r.returncode == 1
+    assert r.stderr.startswith(
+        'ERROR: the following packages/stacks could not have their rosdep keys resolved\n'
+        'to system dependencies:\n')
+    assert 'facer_detect: Cannot locate rosdep definition for [facer_interfaces]' in r.stderr
+    assert 'successfully' not in r.stdout
+
+
+def test_python2_key_is_unknown_and_r_continues(facer):
+    path = facer / 'src/facer_detect/package.xml'
+    path.write_text(path.read_text().replace('python3-opencv', 'python-opencv'))
+    r = rosdep.run_command('install -i --from-paths src -y')
+    assert r.returncode == 1
+    assert 'facer_detect: Cannot locate rosdep definition for [python-opencv]' in r.stderr
+    r = rosdep.run_command('install -i --from-paths src -y -r')
+    assert r.returncode == 0
+    assert 'Continuing to install resolvable dependencies...' in r.stderr
+    assert r.stdout.endswith('#All required rosdeps installed successfully\n')
+
+
+def test_resolve_keys_and_check(facer):
+    r = rosdep.run_command('resolve cv_bridge python3-numpy')
+    assert r.stdout == '#apt\nros-humble-cv-bridge\n#apt\npython3-numpy\n'
+    r = rosdep.run_command('resolve python-numpy')
+    assert r.returncode == 1 and "no rosdep rule for 'python-numpy'" in r.stderr
+    keys = rosdep.run_command('keys --from-paths src -i').stdout.split()
+    assert 'geometry_msgs' in keys and 'facer_interfaces' not in keys
+    assert rosdep.run_command('check --from-paths src -i').stdout == \
+        'All system dependencies have been satisfied\n'
+
+
+def test_help_init_update_say_what_they_would_do():
+    assert 'rosdep install <stacks-and-packages>...' in rosdep.run_command('-h').stdout
+    assert '20-default.list' in rosdep.run_command('init').stdout
+    assert 'nothing was downloaded' in rosdep.run_command('update').stdout
+    assert rosdep.run_command('frobnicate').returncode == 1
