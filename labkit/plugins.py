@@ -9,7 +9,7 @@ CLI and `ros2 run` call it before they look anything up.
 import importlib
 
 ROOMS = ("labkit.ament", "labkit.launch", "labkit.bag", "labkit.tf2", "labkit.robots",
-         "labkit.vision", "labkit.sims")
+         "labkit.vision", "labkit.doctor", "labkit.sims")
 
 _done = False
 

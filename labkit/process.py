@@ -192,8 +192,17 @@ _real_sleep = time.sleep
 
 
 def _process_sleep(seconds):
+    if world.mode() != "virtual":
+        return _real_sleep(seconds)
     proc = current()
-    if proc is MAIN or world.mode() != "virtual":
+    if proc is MAIN:
+        # The notebook/script itself: its main thread and the threads the world
+        # schedules (executor workers) sleep in virtual time too, so `time.sleep(1)`
+        # in a cell or an execute callback lets the graph live one second.
+        if threading.current_thread() is threading.main_thread() or world.is_member():
+            if seconds < 0:
+                raise ValueError("sleep length must be non-negative")
+            return world.sleep(seconds)
         return _real_sleep(seconds)
     if seconds < 0:
         raise ValueError("sleep length must be non-negative")

@@ -9,24 +9,18 @@ from labkit.ament.files import (cat, cd, leave_home, ls, mkdir, pwd, tree,  # no
                                 use_home)
 
 # --- workspaces (colcon build, source, the ament index, rosdep) -------------------------------
-# `ros2 pkg` asks labkit.ament for package_names() / package_prefix(); the magics and the
-# `ament_index_python` import name are registered here, on first import of labkit.ament.
+# `ros2 pkg` asks labkit.ament for package_names() / package_prefix(); register() (called by
+# labkit.plugins) adds the `ament_index_python` import name and the magics.
 # Entry points: labkit.ament.colcon.run_command(command), labkit.ament.source.run(path),
 # labkit.ament.rosdep.run_command(command).
 from labkit.ament.index import package_names, package_prefix  # noqa: E402,F401
 
 
-def _register_extensions():
+def register():
+    """labkit.plugins hook: the `ament_index_python` import name and the magics."""
     from labkit import compat
     from labkit.cli import magics
     compat.register_alias('ament_index_python', 'labkit.ament.ament_index_python')
-    compat.register_alias('launch', 'labkit.launch')
-    compat.register_alias('launch_ros', 'labkit.launch_ros')
-    from labkit.cli.ros2 import register_noun
-    register_noun('launch', 'labkit.launch.cli', 'Run a launch file')
     from labkit.ament import magics as ament_magics
     for name, fn in ament_magics.MAGICS.items():
         magics.register(name, fn)
-
-
-_register_extensions()

@@ -362,6 +362,11 @@ def build_ament_cmake(ctx):
                                     f'  file INSTALL cannot find\n  "{_shown(full)}":\n'
                                     f'  No such file or directory.')
                 _place(full, os.path.join(dest, os.path.basename(src)), ctx.symlink)
+    for module, package_dir in conf.python_packages:
+        src = os.path.join(pkg.path, package_dir)
+        if not os.path.isdir(src):
+            return res.fail(f"error: package directory '{package_dir}' does not exist")
+        _place_tree(src, os.path.join(ctx.prefix, PYTHON_DIR, module), False)
     # without ament_package() nothing registers the package in the ament index
     _common_install(ctx, with_manifest=conf.ament_package, with_marker=conf.ament_package)
     res.cost = 1.45 + 0.85 * len(specs) + 0.05 * len(conf.installs) + \

@@ -16,7 +16,7 @@ IGNORED = {
     'ament_export_dependencies', 'ament_export_include_directories',
     'ament_export_libraries', 'ament_export_targets', 'ament_lint_auto_find_test_dependencies',
     'rosidl_get_typesupport_target', 'rosidl_target_interfaces', 'message', 'list',
-    'ament_add_gtest', 'ament_add_pytest_test', 'ament_python_install_package',
+    'ament_add_gtest', 'ament_add_pytest_test',
     'rclcpp_components_register_node', 'rclcpp_components_register_nodes',
     'set_target_properties', 'find_library', 'link_directories', 'option', 'string',
 }
@@ -126,6 +126,7 @@ class Configure:
         self.installs = []          # (kind, [sources], destination)
         self.ament_package = False
         self.targets = []           # add_executable names (not built in labkit)
+        self.python_packages = []   # ament_python_install_package(<name> [PACKAGE_DIR d])
 
 
 def configure(text, package_name, is_known_package, member_of_groups):
@@ -171,6 +172,8 @@ def configure(text, package_name, is_known_package, member_of_groups):
                     commands_available.add('rosidl_generate_interfaces')
                 if pkg in ('ament_cmake', 'ament_cmake_python'):
                     commands_available.add('ament_package')
+                if pkg == 'ament_cmake_python':
+                    commands_available.add('ament_python_install_package')
             elif 'REQUIRED' in args:
                 raise not_found(cmd, pkg)
         elif cmd.name == 'rosidl_generate_interfaces':
@@ -183,6 +186,12 @@ def configure(text, package_name, is_known_package, member_of_groups):
             if 'ament_package' not in commands_available:
                 raise error(cmd, '  Unknown CMake command "ament_package".')
             result.ament_package = True
+        elif cmd.name == 'ament_python_install_package':
+            if 'ament_python_install_package' not in commands_available:
+                raise error(cmd, '  Unknown CMake command "ament_python_install_package".')
+            package_dir = args[args.index('PACKAGE_DIR') + 1] if 'PACKAGE_DIR' in args \
+                and args.index('PACKAGE_DIR') + 1 < len(args) else args[0]
+            result.python_packages.append((args[0], package_dir))
         elif cmd.name in ('add_executable', 'add_library'):
             result.targets.append(args[0] if args else '')
         elif cmd.name in IGNORED or cmd.name in ('endforeach', 'foreach', 'function',

@@ -324,11 +324,11 @@ def build_verb(args, io, clock):
             if direct:
                 for line in res.stderr:
                     io.eprint(line)
-            else:
-                io.eprint(f'--- stderr: {pkg.name}')
-                for line in res.stderr:
-                    io.eprint(line)
-                io.eprint('---')
+            # colcon-output's console_stderr: the package's stderr as one block at its end
+            io.eprint(f'--- stderr: {pkg.name}')
+            for line in res.stderr:
+                io.eprint(line)
+            io.eprint('---')
         took = format_duration(max(clock.now() - started, 0.0))
         _write_package_log(log_dir, pkg.name, res)
         if res.returncode:
@@ -345,15 +345,16 @@ def build_verb(args, io, clock):
     _write_install_scripts(install_base, [p for p in ordered if os.path.isdir(
         os.path.join(install_base, p.name))])
     _write_log_summary(log_dir, events)
-    if failed or stderr_pkgs or blocked:
-        io.print('')
+    io.print('')    # the summary is separated from the previous output
     io.print(f'Summary: {_plural(len(finished))} finished [{format_duration(clock.now())}]')
     if failed:
-        io.print(f'  {_plural(len(failed))} failed: ' + ' '.join(n for n, _ in failed))
+        io.print(f'  {_plural(len(failed))} failed: ' + ' '.join(sorted(n for n, _ in failed)))
     if stderr_pkgs:
-        io.print(f'  {_plural(len(stderr_pkgs))} had stderr output: ' + ' '.join(stderr_pkgs))
-    if blocked - {n for n, _ in failed}:
-        io.print(f'  {_plural(len(blocked - {n for n, _ in failed}))} not processed')
+        io.print(f'  {_plural(len(stderr_pkgs))} had stderr output: ' +
+                 ' '.join(sorted(stderr_pkgs)))
+    not_processed = blocked - {n for n, _ in failed}
+    if not_processed:
+        io.print(f'  {_plural(len(not_processed))} not processed')
     return failed[0][1] if failed else 0
 
 

@@ -178,10 +178,33 @@ def _register_executables(name, prefix, site):
     from labkit import executables
     executables.unregister_package(name)
     libexec = os.path.join(prefix, 'lib', name)
+    registered = set()
     for egg in _egg_infos(site):
         for exe, target in _entry_points(egg):
             if os.path.isfile(os.path.join(libexec, exe)):
                 executables.register(name, exe, launcher_target(name, exe, target))
+                registered.add(exe)
+    # other executables there (install(PROGRAMS ...), data_files): Python scripts run as
+    # __main__; anything else (a compiled program) cannot run in labkit
+    try:
+        entries = sorted(os.listdir(libexec))
+    except OSError:
+        entries = []
+    for exe in entries:
+        path = os.path.join(libexec, exe)
+        if exe in registered or not os.path.isfile(path) or not os.access(path, os.X_OK):
+            continue
+        if _is_python_script(path):
+            executables.register(name, exe, launcher_target(name, exe, None, script=path))
+
+
+def _is_python_script(path):
+    try:
+        with open(path, 'rb') as f:
+            first = f.readline(200)
+    except OSError:
+        return False
+    return first.startswith(b'#!') and b'python' in first or path.endswith('.py')
 
 
 # ------------------------------------------------------------------ console_scripts launchers
@@ -189,7 +212,7 @@ def _register_executables(name, prefix, site):
 _LAUNCHERS = 'labkit.ament._launchers'
 
 
-def launcher_target(package, exe, target):
+def launcher_target(package, exe, target, script=None):
     """A "module:function" for executables.register that imports `target` when run.
 
     The import happens inside the started process, so a console_scripts entry
@@ -204,6 +227,10 @@ def launcher_target(package, exe, target):
     func_name = f'{package}__{exe}'.replace('-', '_').replace('.', '_')
 
     def main(args=None):
+        if script is not None:
+            import runpy
+            runpy.run_path(script, run_name='__main__')
+            return 0
         mod_name, _, attr = target.partition(':')
         func = importlib.import_module(mod_name)
         for part in attr.split('.') if attr else ():
@@ -215,14 +242,18 @@ def launcher_target(package, exe, target):
 
 
 def _forget_modules(tops, install_dir):
-    """Drop the workspace's modules from sys.modules: the next import reads the new code."""
-    workspace = os.path.dirname(install_dir)
+    """Drop the workspace's modules from sys.modules: the next import reads the new code.
+
+    Only modules of this workspace's python packages, or loaded from its install/ or
+    build/ (symlink installs) folders; never labkit's own.
+    """
+    roots = [install_dir + os.sep,
+             os.path.join(os.path.dirname(install_dir), 'build') + os.sep]
     for key in list(sys.modules):
-        mod = sys.modules.get(key)
         top = key.split('.')[0]
-        path = getattr(mod, '__file__', None) or ''
         if top == 'labkit':
             continue
-        if top in tops or (path and os.path.abspath(path).startswith(workspace + os.sep)):
+        path = getattr(sys.modules.get(key), '__file__', None) or ''
+        if top in tops or (path and os.path.abspath(path).startswith(tuple(roots))):
             del sys.modules[key]
     importlib.invalidate_caches()

@@ -16,6 +16,7 @@ def add_arguments(parser, cli_name):
         ('info', 'Print information about a bag to the screen', _info_args, info),
         ('play', 'Play back ROS data from a bag', _play_args, play),
         ('record', 'Record ROS data to a bag', _record_args, record),
+        ('reindex', 'Reconstruct metadata file for a bag', _reader_args, reindex),
     ])
 
 
@@ -71,6 +72,24 @@ def info(args, io):
     except BagError as e:
         return str(e)
     io.print(metadata)
+
+
+# --------------------------------------------------------------------------- reindex
+
+def reindex(args, io):
+    """Rebuild metadata.yaml from the bag's sqlite3 files (a recording that was killed)."""
+    from labkit.bag.metadata import METADATA_FILENAME, write_metadata
+    from labkit.bag.storage import BagError, read_bag_metadata
+    if not os.path.isdir(args.bag_path):
+        return print_error('Must specify a bag directory')
+    stale = os.path.join(args.bag_path, METADATA_FILENAME)
+    if os.path.exists(stale):
+        os.remove(stale)
+    try:
+        metadata = read_bag_metadata(args.bag_path, args.storage)
+    except BagError as e:
+        return str(e)
+    write_metadata(args.bag_path, metadata)
 
 
 # --------------------------------------------------------------------------- record

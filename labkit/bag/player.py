@@ -39,23 +39,29 @@ class Player:
                         log.info(f'Press {key} for {op}')
                 first = reader.metadata.starting_time
                 start = first + int(a.start_offset * 1e9)
-                topics = list(publishers) or None
-                while node.ok():
+                topics = list(publishers)
+                if not topics:
+                    return 0
+                rclpy_node, context = node.node, node.context
+                clock = rclpy_node.get_clock()
+                while context.ok():
                     if a.delay > 0:
-                        self._sleep_until(node, node.get_clock().now().nanoseconds +
-                                          int(a.delay * 1e9))
-                    t0 = node.get_clock().now().nanoseconds
+                        self._sleep_until(node, clock.now().nanoseconds + int(a.delay * 1e9))
+                    t0 = now = clock.now().nanoseconds
                     for topic, data, stamp in reader.messages(topics, start):
                         due = t0 + int((stamp - start) / a.rate)
-                        if not self._sleep_until(node, due):
+                        if due > now:  # (a message already due needs no clock reading)
+                            now = clock.now().nanoseconds
+                            if due > now:
+                                if not self._sleep_until(node, due):
+                                    return 0
+                                now = due
+                        if not context.ok():
                             return 0
                         pub, cls = publishers[topic]
                         pub.publish(deserialize(data, cls))
                     if not a.loop:
                         break
-                # let the last messages reach their subscribers before the node goes
-                if node.ok():
-                    node.spin_once(timeout_sec=0.0)
         except KeyboardInterrupt:
             pass
         finally:
@@ -84,8 +90,8 @@ class Player:
     @staticmethod
     def _sleep_until(node, due_ns):
         """Wait (a world wait point) until the clock reaches `due_ns`; False if stopped."""
-        clock = node.get_clock()
-        while node.ok():
+        clock = node.node.get_clock()
+        while node.context.ok():
             left = due_ns - clock.now().nanoseconds
             if left <= 0:
                 return True

@@ -16,8 +16,9 @@ DEFAULT_STORAGE_ID = 'sqlite3'
 STORAGE_IDS = ('sqlite3', 'mcap')
 EXTENSIONS = {'sqlite3': '.db3', 'mcap': '.mcap'}
 SQLITE_SCHEMA_VERSION = 3   # Humble's kDBSchemaVersion_
-COMMIT_EVERY_MESSAGES = 200
-COMMIT_EVERY_SECONDS = 0.2  # wall time: what a dying kernel may lose at most
+COMMIT_EVERY_MESSAGES = 1000
+COMMIT_EVERY_SECONDS = 0.2     # wall time: what a dying kernel may lose at most
+METADATA_EVERY_SECONDS = 0.5   # metadata.yaml follows the committed batches (see read)
 
 _SCHEMA = (
     'CREATE TABLE schema(schema_version INTEGER PRIMARY KEY,ros_distro TEXT NOT NULL);',
@@ -47,40 +48,54 @@ class _SqliteFile:
     def __init__(self, path):
         self.path = path
         self.conn = sqlite3.connect(path, isolation_level=None, check_same_thread=False)
-        # rollback journal (a killed writer's half batch is rolled back, the rest stays);
-        # no fsync per commit, like Humble's default pragmas
+        # A rollback journal keeps a killed writer's file sound (its half batch is rolled
+        # back by the next reader); PERSIST spares creating it per batch; no fsync, like
+        # Humble's default pragmas.
+        self.conn.execute('PRAGMA journal_mode=PERSIST')
         self.conn.execute('PRAGMA synchronous=OFF')
         for stmt in _SCHEMA:
             self.conn.execute(stmt)
         self.conn.execute('INSERT INTO schema (schema_version, ros_distro) VALUES (?, ?)',
                           (SQLITE_SCHEMA_VERSION, os.environ.get('ROS_DISTRO', 'humble')))
-        self._pending = 0
+        self._rows = []
         self._last_commit = time.monotonic()
-        self.conn.execute('BEGIN')
+
+    @property
+    def _pending(self):
+        return len(self._rows)
 
     def create_topic(self, t):
+        self.commit()
         cur = self.conn.execute(
             'INSERT INTO topics (name, type, serialization_format, offered_qos_profiles) '
             'VALUES (?, ?, ?, ?)', (t.name, t.type, t.serialization_format, t.offered_qos_profiles))
-        self.commit()
         return cur.lastrowid
 
     def write(self, topic_id, timestamp, data):
-        self.conn.execute('INSERT INTO messages (timestamp, topic_id, data) VALUES (?, ?, ?)',
-                          (timestamp, topic_id, bytes(data)))
-        self._pending += 1
-        if self._pending >= COMMIT_EVERY_MESSAGES or \
+        """Queue a row; True when this made a batch that was committed."""
+        self._rows.append((timestamp, topic_id, bytes(data)))
+        if len(self._rows) >= COMMIT_EVERY_MESSAGES or \
                 time.monotonic() - self._last_commit >= COMMIT_EVERY_SECONDS:
             self.commit()
+            return True
+        return False
 
     def commit(self):
-        self.conn.execute('COMMIT')
-        self._pending = 0
+        rows, self._rows = self._rows, []
+        if rows:
+            self.conn.execute('BEGIN')
+            self.conn.executemany(
+                'INSERT INTO messages (timestamp, topic_id, data) VALUES (?, ?, ?)', rows)
+            self.conn.execute('COMMIT')
         self._last_commit = time.monotonic()
-        self.conn.execute('BEGIN')
+
+    def settle(self):
+        """Everything committed and no -journal file left behind (the writer may go idle)."""
+        self.commit()
+        self.conn.execute('PRAGMA journal_mode=DELETE')
 
     def close(self):
-        self.conn.execute('COMMIT')
+        self.settle()
         self.conn.close()
 
 
@@ -104,6 +119,7 @@ class _McapFile:
 
     def write(self, topic_id, timestamp, data):
         self.writer.write(self.connections[topic_id], timestamp, bytes(data))
+        return False
 
     def commit(self):
         pass
@@ -143,6 +159,7 @@ class BagWriter:
         self.end = None
         self.count = 0
         self.closed = False
+        self._metadata_written = 0.0
 
     def create_topic(self, topic):
         if topic.name in self.topics:
@@ -162,26 +179,27 @@ class BagWriter:
             raise BagError(f"Failed to write on topic '{topic_name}'. "
                            'Call create_topic() before first write.')
         timestamp = int(timestamp)
-        self.file.write(entry[0], timestamp, data)
+        committed = self.file.write(entry[0], timestamp, data)
         entry[1].message_count += 1
         self.count += 1
         if self.start is None or timestamp < self.start:
             self.start = timestamp
         if self.end is None or timestamp > self.end:
             self.end = timestamp
-        if self.storage_id == 'sqlite3' and self.file._pending == 0:
-            self._refresh_metadata()  # a batch was just committed: describe it
+        if committed and time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
+            self._refresh_metadata()
 
     def flush(self):
-        self.file.commit()
+        getattr(self.file, 'settle', self.file.commit)()
         self._refresh_metadata()
 
     def _refresh_metadata(self):
         # rosbag2 writes metadata.yaml once, at close. A writer that is never closed (a
-        # killed kernel) would leave the committed messages undescribed, so each committed
-        # batch rewrites it: the bag on disk is always complete up to its last batch.
+        # killed kernel) would leave no metadata at all, so committed batches refresh it
+        # now and then; a reader that finds more rows than it describes reindexes.
         if self.storage_id == 'sqlite3':
             write_metadata(self.uri, self.metadata())
+            self._metadata_written = time.monotonic()
 
     def metadata(self):
         start = self.start or 0
@@ -242,7 +260,7 @@ class _SqliteReader:
             query += ' AND timestamp >= ?'
             params = (int(start),)
         for tid, stamp, data in self.conn.execute(query + ' ORDER BY timestamp, id', params):
-            yield ids[tid], bytes(data), stamp
+            yield ids[tid], data, stamp  # (sqlite3 gives BLOBs as bytes)
 
     def file_information(self, relative):
         row = self.conn.execute('SELECT MIN(timestamp), MAX(timestamp), COUNT(*) '
@@ -320,13 +338,36 @@ def _storage_files(directory):
     return sorted(p for p in os.listdir(directory) if p.endswith(('.db3', '.mcap')))
 
 
+def _stale(directory, m):
+    """True when a sqlite3 file holds more messages than metadata.yaml says (a writer that
+    died after its last metadata refresh)."""
+    if m.storage_identifier != 'sqlite3' or not m.files:
+        return False
+    for f in m.files:
+        path = os.path.join(directory, f.path)
+        if not os.path.exists(path):
+            return False
+        try:
+            conn = sqlite3.connect(f'file:{os.path.abspath(path)}?mode=ro', uri=True)
+            try:
+                last = conn.execute('SELECT MAX(id) FROM messages').fetchone()[0] or 0
+            finally:
+                conn.close()
+        except sqlite3.Error:
+            return True  # a hot journal: let the reindexing reader roll it back
+        if last > f.message_count:
+            return True
+    return False
+
+
 def read_bag_metadata(uri, storage_id=''):
     """metadata.yaml if the bag has one, else what `ros2 bag reindex` would rebuild."""
     uri = os.fspath(uri)
     if os.path.isdir(uri) and os.path.exists(os.path.join(uri, METADATA_FILENAME)):
         m = read_metadata(uri)
         m.bag_size = directory_size(uri)
-        return m
+        if not _stale(uri, m):
+            return m
     if os.path.isdir(uri):
         directory, names = uri, _storage_files(uri)
     else:

@@ -346,6 +346,12 @@ def finished(thread):
     return not thread.is_alive()
 
 
+def is_member(thread=None):
+    """Virtual time: does this thread take part in the baton (a world thread)?"""
+    thread = thread or threading.current_thread()
+    return thread.ident in _by_ident
+
+
 def thread_waiting(thread):
     """Virtual time: is this world thread parked at a wait point?"""
     rec = _by_ident.get(thread.ident)

@@ -15,8 +15,19 @@ from labkit.launch.service import LaunchService  # noqa: F401
 from labkit.launch.substitution import Substitution  # noqa: F401
 from labkit.launch.utilities import perform_substitutions  # noqa: F401
 
+
+
+def register():
+    """labkit.plugins hook: `import launch` / `import launch_ros`, and `ros2 launch`."""
+    from labkit import compat
+    from labkit.cli.ros2 import register_noun
+    compat.register_alias('launch', 'labkit.launch')
+    compat.register_alias('launch_ros', 'labkit.launch_ros')
+    register_noun('launch', 'labkit.launch.cli', 'Run a launch file')
+
+
 SomeSubstitutionsType = object  # typing aliases used in annotations only
 
 __all__ = ['Action', 'LaunchContext', 'LaunchDescription', 'LaunchDescriptionEntity',
            'LaunchService', 'Substitution', 'actions', 'conditions',
-           'launch_description_sources', 'substitutions']
+           'launch_description_sources', 'register', 'substitutions']

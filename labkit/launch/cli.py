@@ -75,7 +75,6 @@ def parse_launch_arguments(arguments):
 
 
 def main(args, io):
-    import labkit.ament  # noqa: F401  (the launch/launch_ros import names)
     from labkit import compat
     from labkit.ament.index import PackageNotFoundError
     compat.activate(quiet=True)

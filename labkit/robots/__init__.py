@@ -13,6 +13,8 @@ EXECUTABLES = {
     ("joint_state_publisher_gui", "joint_state_publisher_gui"):
         "labkit.robots.joint_state_publisher:gui_main",
     ("xacro", "xacro"): "labkit.robots.xacro_support:main",
+    # rviz2 stand-in: the meshcat viewer following /robot_description and /tf
+    ("rviz2", "rviz2"): "labkit.viz.meshcat_view:rviz_main",
 }
 
 
@@ -43,3 +45,21 @@ def description(path, mappings=None):
 def share_directory(package):
     from labkit.robots import packages
     return packages.share_directory(package)
+
+
+def display(model="urdf/01-myfirst.urdf", gui=True, echo=True):
+    """What `ros2 launch urdf_tutorial display.launch.py model:=... gui:=...` starts:
+    robot_state_publisher (xacro-expanded model), joint_state_publisher(_gui) and
+    the viewer in place of rviz2. A relative `model` is taken inside urdf_tutorial's share.
+    Returns the processes; `labkit.viz.meshcat_view.current()` is the viewer."""
+    import os
+    from labkit import process
+    from labkit.robots import r2d2
+    model = str(model)
+    if not os.path.isabs(model) and not os.path.exists(model):
+        model = os.path.join(share_directory("urdf_tutorial"), model)
+    text = description(model)
+    jsp = "joint_state_publisher_gui" if gui else "joint_state_publisher"
+    return [process.start([jsp, jsp], echo=echo),
+            r2d2.start_robot_state_publisher(text, echo=echo),
+            process.start(["rviz2", "rviz2"], echo=echo)]

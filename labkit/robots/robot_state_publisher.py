@@ -40,6 +40,31 @@ def transform_stamped(parent, child, stamp, xyz, quat):
     return t
 
 
+# rclcpp declares read-only qos_overrides.* parameters for /parameter_events and for
+# every entity created with qos_overriding_options (tf2_ros broadcasters, joint_states)
+_QOS_OVERRIDES = (
+    ("/parameter_events", "publisher", (("depth", 1000), ("durability", "volatile"),
+                                        ("history", "keep_last"), ("reliability", "reliable"))),
+    ("/joint_states", "subscription", (("depth", 5), ("history", "keep_last"),
+                                       ("reliability", "best_effort"))),
+    ("/tf", "publisher", (("depth", 100), ("durability", "volatile"),
+                          ("history", "keep_last"), ("reliability", "reliable"))),
+    ("/tf_static", "publisher", (("depth", 1), ("durability", "transient_local"),
+                                 ("history", "keep_last"), ("reliability", "reliable"))),
+)
+
+
+def _declare_qos_overrides(node):
+    Descriptor = module("rcl_interfaces.msg").ParameterDescriptor
+    for topic, kind, policies in _QOS_OVERRIDES:
+        for policy, value in policies:
+            name = f"qos_overrides.{topic}.{kind}.{policy}"
+            if not node.has_parameter(name):
+                node.declare_parameter(name, value, Descriptor(
+                    description=f"qos policy {{{policy}}} for {kind} {{{topic}}}",
+                    read_only=True))
+
+
 def _stamp_ns(stamp):
     return stamp.sec * _NS_PER_S + stamp.nanosec
 
@@ -72,6 +97,7 @@ class RobotStatePublisher(Node):
             raise RuntimeError("publish_frequency must be between 0 and 1000")
         self.declare_parameter("frame_prefix", "")
         self.declare_parameter("ignore_timestamp", False)
+        _declare_qos_overrides(self)
 
         self._tf_pub = self.create_publisher(TFMessage, "/tf", QoSProfile(depth=100))
         self._tf_static_pub = self.create_publisher(TFMessage, "/tf_static", static_qos())
@@ -83,6 +109,9 @@ class RobotStatePublisher(Node):
                                  qos_profile_sensor_data)
         self.publish_fixed_transforms()
         self.add_on_set_parameters_callback(self._on_set_parameters)
+        self.create_subscription(module("rcl_interfaces.msg").ParameterEvent,
+                                 "/parameter_events", self._on_parameter_event,
+                                 QoSProfile(depth=1000))
 
     # -- description ---------------------------------------------------------
     def _parse(self, urdf_xml):
@@ -119,19 +148,24 @@ class RobotStatePublisher(Node):
                     self.get_logger().warn(str(exc))
                     result.successful, result.reason = False, str(exc)
                     break
-                # Humble re-reads the model from /parameter_events; same effect, sooner
-                self._pending_description = p.value
             elif p.name == "publish_frequency":
                 if p.value < 0.0 or p.value > 1000.0:
                     result.successful = False
                     result.reason = "publish_frequency must be between 0.0 and 1000.0"
                     break
-        pending = getattr(self, "_pending_description", None)
-        if result.successful and pending is not None and hasattr(self, "model"):
-            self._pending_description = None
-            self._setup_urdf(pending)
-            self.publish_fixed_transforms()
         return result
+
+    def _on_parameter_event(self, event):
+        """A changed robot_description (seen on /parameter_events, as Humble does) reloads."""
+        if event.node != self.get_fully_qualified_name():
+            return
+        for p in event.changed_parameters:
+            if p.name == "robot_description":
+                try:
+                    self._setup_urdf(p.value.string_value)
+                    self.publish_fixed_transforms()
+                except RuntimeError as exc:
+                    self.get_logger().warn(f"Failed to parse new URDF: {exc}")
 
     # -- transforms ------------------------------------------------------------
     def _prefix(self):
@@ -197,12 +231,12 @@ def _terminate(what):
 
 
 def main(args=None):
-    _run(args, None)
+    return _run(args, None)
 
 
 def main_with_description(description, args=None):
     """main() with `robot_description` given, as a launch file's parameters=[...] does."""
-    _run(args, description)
+    return _run(args, description)
 
 
 def _run(args, description):

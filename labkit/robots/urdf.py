@@ -70,10 +70,23 @@ def axis_angle_matrix(axis, angle):
 
 
 def quaternion_from_matrix(r):
-    """(x, y, z, w) of a rotation matrix, w >= 0."""
-    from scipy.spatial.transform import Rotation
-    q = Rotation.from_matrix(r).as_quat()
-    return tuple(float(v) for v in (q if q[3] >= 0 else -q))
+    """(x, y, z, w) of a rotation matrix, w >= 0 (Shepperd's method: plain floats are
+    faster than scipy for one matrix at a time)."""
+    (m00, m01, m02), (m10, m11, m12), (m20, m21, m22) = r.tolist()
+    trace = m00 + m11 + m22
+    if trace > 0:
+        s = 2.0 * math.sqrt(trace + 1.0)
+        q = ((m21 - m12) / s, (m02 - m20) / s, (m10 - m01) / s, 0.25 * s)
+    elif m00 > m11 and m00 > m22:
+        s = 2.0 * math.sqrt(1.0 + m00 - m11 - m22)
+        q = (0.25 * s, (m01 + m10) / s, (m02 + m20) / s, (m21 - m12) / s)
+    elif m11 > m22:
+        s = 2.0 * math.sqrt(1.0 + m11 - m00 - m22)
+        q = ((m01 + m10) / s, 0.25 * s, (m12 + m21) / s, (m02 - m20) / s)
+    else:
+        s = 2.0 * math.sqrt(1.0 + m22 - m00 - m11)
+        q = ((m02 + m20) / s, (m12 + m21) / s, 0.25 * s, (m10 - m01) / s)
+    return q if q[3] >= 0 else tuple(-v for v in q)
 
 
 class Joint:

@@ -181,7 +181,8 @@ class TimeCache:
             return entries[0], None
         if time > latest:
             err[0] = ("Lookup would require extrapolation into the future.  Requested time %s "
-                      "but the latest data is at time %s" % (display_time(time), display_time(latest)))
+                      "but the latest data is at time %s"
+                      % (display_time(time), display_time(latest)))
             return None
         if time < earliest:
             err[0] = ("Lookup would require extrapolation into the past.  Requested time %s "

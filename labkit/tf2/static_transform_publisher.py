@@ -93,7 +93,8 @@ def parse_args(args):
     if "rpy" in seen:
         quat[:] = quaternion_from_rpy(*rpy)
     if len(loose) in (8, 9):
-        rcutils_log("WARN", "Old-style arguments are deprecated; see --help for new-style arguments")
+        rcutils_log("WARN", "Old-style arguments are deprecated; "
+                    "see --help for new-style arguments")
         if seen & {"frame", "trans", "quat"}:
             raise ParseError("Cannot specify both new-style (flags) and old-style (arguments)")
         for name, key, text in zip("xyz", ("--x", "--y", "--z"), loose):

@@ -3,10 +3,12 @@
 Prints, at `rate` Hz (default 1), the transform that takes data from target_frame
 into source_frame, in tf2_echo's exact layout."""
 import math
+import random
 import sys
 import time
 
 import labkit.rclpy as rclpy
+from labkit.graph import world
 from labkit.rclpy.time import Time
 
 from ._cpp import euler_ypr, matrix3, stod_pos
@@ -73,8 +75,11 @@ def _run(args):
     node._labkit_parameter_dialect = "rclcpp"
     clock = node.get_clock()
     buffer = Buffer()
-    # rclcpp's listener spins its own node in its own thread; spinning ours does the same job
-    listener = TransformListener(buffer, node, spin_thread=True)
+    # rclcpp's TransformListener makes its own node, transform_listener_impl_<address>,
+    # and spins it in its own thread (`ros2 node list` shows both nodes)
+    impl = rclpy.create_node(_listener_node_name(), start_parameter_services=False)
+    impl._labkit_parameter_dialect = "rclcpp"
+    listener = TransformListener(buffer, impl, spin_thread=True)
     source_frameid, target_frameid = args[1], args[2]
     try:
         last_log = None
@@ -108,8 +113,18 @@ def _run(args):
             listener.executor.shutdown()
         except Exception:
             pass
+        impl.destroy_node()
         node.destroy_node()
     return 0
+
+
+_virtual_addresses = random.Random(1)
+
+
+def _listener_node_name():
+    """transform_listener_impl_ + a heap address in hex (fixed sequence in virtual time)."""
+    rng = _virtual_addresses if world.mode() == "virtual" else random.SystemRandom()
+    return "transform_listener_impl_%x" % (0x550000000000 + rng.randrange(0x10000000000) * 16)
 
 
 def _seconds(ns, fixed):

@@ -116,7 +116,8 @@ def quaternion_slerp(quat0, quat1, fraction, spin=0, shortestpath=True):
     if abs(angle) < np.finfo(float).eps * 4.0:
         return q0
     isin = 1.0 / math.sin(angle)
-    return (math.sin((1.0 - fraction) * angle) * isin) * q0 + (math.sin(fraction * angle) * isin) * q1
+    return ((math.sin((1.0 - fraction) * angle) * isin) * q0
+            + (math.sin(fraction * angle) * isin) * q1)
 
 
 def identity_matrix():

@@ -33,8 +33,9 @@ FRAMES = ROOT + "/frames"
 # ---------------------------------------------------------------- assets
 @functools.lru_cache(maxsize=1)
 def _viewer_js_gz():
-    import meshcat
-    path = os.path.join(os.path.dirname(meshcat.__file__), "viewer", "dist", "main.min.js")
+    import importlib.util       # find meshcat without importing it (its __init__ pulls zmq)
+    package = importlib.util.find_spec("meshcat").submodule_search_locations[0]
+    path = os.path.join(package, "viewer", "dist", "main.min.js")
     with open(path, "rb") as handle:
         return base64.b64encode(gzip.compress(handle.read(), 9, mtime=0)).decode("ascii")
 
@@ -189,6 +190,7 @@ class RobotView:
     def __init__(self, model=None, *, frames=True, frame_scale=0.15, height=420,
                  fixed_frame=None):
         self.height = height
+        self.reach = None         # metres the camera must take in (None: the robot's size)
         self.show_frames = frames
         self.frame_scale = frame_scale
         self.fixed_frame = fixed_frame
@@ -326,8 +328,18 @@ class RobotView:
             return self.iframe(live_url=self._server.url)
         return self.iframe()
 
-    def show(self):
+    def show(self, live=None):
+        """Display the view. live=None: a live page (127.0.0.1 server) when labkit runs in
+        live time inside a kernel, else the static snapshot (what the book stores)."""
         from IPython.display import HTML, display
+        if live is None:
+            import labkit
+            from IPython import get_ipython
+            shell = get_ipython()
+            live = (labkit.time_mode() == "live" and shell is not None
+                    and getattr(shell, "kernel", None) is not None)
+        if live:
+            self.serve()
         display(HTML(self._repr_html_()))
 
     # -- live: follow /tf ----------------------------------------------------------
@@ -397,8 +409,8 @@ class RobotView:
 
     def _camera(self):
         """Put meshcat's camera at a distance that fits the robot (meshcat's is Y-up)."""
-        reach = 1.0
-        if self.model is not None:
+        reach = self.reach or 1.0
+        if self.model is not None and not self.reach:
             poses = self.model.link_poses({})
             reach = max([float(np.linalg.norm(m[:3, 3])) for m in poses.values()] + [0.4])
         d = 2.2 * reach + 0.5
@@ -439,6 +451,7 @@ def r2d2_walk(seconds=12.0, fps=10):
     from labkit.robots import r2d2
     from labkit.robots.urdf import pose_matrix
     view = RobotView(r2d2.urdf_path(), frame_scale=0.2)
+    view.reach = 2.6              # the 2 m circle it walks
     motion = r2d2.R2D2Motion()
     frames = []
     steps_per_key = max(1, int(round(30 / fps)))
@@ -455,14 +468,30 @@ def r2d2_walk(seconds=12.0, fps=10):
 
 
 # ---------------------------------------------------------------- live parts
-def _follow_main(view, args=None):
+_views = []
+
+
+def current():
+    """The view of the most recent `ros2 run rviz2 rviz2` (None if none ran)."""
+    return _views[-1] if _views else None
+
+
+def rviz_main(args=None):
+    """`rviz2` stand-in: a node named rviz2 that keeps a RobotView of /robot_description
+    and /tf; `labkit.viz.meshcat_view.current()` returns it for display."""
+    view = RobotView()
+    _views.append(view)
+    _follow_main(view, args, node_name="rviz2")
+
+
+def _follow_main(view, args=None, node_name="labkit_meshcat_view"):
     """The hidden viewer node: /tf, /tf_static and /robot_description move the scene."""
     import labkit.rclpy as rclpy
     from labkit.interfaces import module
     from labkit.rclpy.executors import ExternalShutdownException
     from labkit.rclpy.qos import DurabilityPolicy, QoSProfile
     rclpy.init(args=args)
-    node = rclpy.create_node("labkit_meshcat_view")
+    node = rclpy.create_node(node_name)
     TFMessage = module("tf2_msgs.msg").TFMessage
     latched = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
 

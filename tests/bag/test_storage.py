@@ -134,9 +134,9 @@ def test_file_sizes_like_rosbag2():
     assert format_file_size(5 * 1024 ** 3) == '5.0 GiB'
 
 
-def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
-    """The kernel dies mid-recording: committed batches stay, metadata.yaml describes them."""
-    script = textwrap.dedent('''
+def _killed_writer(n):
+    """A kernel that dies mid-recording: no close, no destructor, no atexit."""
+    return textwrap.dedent(f'''
         import os
         import labkit.interfaces as ifc
         from labkit.bag import rosbag2_py
@@ -144,18 +144,35 @@ def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
         w = rosbag2_py.SequentialWriter()
         w.open(rosbag2_py.StorageOptions(uri='crash'), rosbag2_py.ConverterOptions())
         w.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
-        for k in range(450):
+        for k in range({n}):
             w.write('/c', ifc.serialize(String(data=str(k))), 1000 + k)
-        os._exit(9)   # no close, no destructor, no atexit
+        os._exit(9)
     ''')
-    subprocess.run([sys.executable, '-c', script], check=False, cwd=bag_dir)
-    m = read_metadata('crash')
-    assert m.message_count == 400  # two batches of 200 were committed
-    with Reader('crash') as reader:
-        assert sum(1 for _ in reader.messages()) == 400
-    os.remove('crash/metadata.yaml')  # even without it, info rebuilds what it can
+
+
+def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
+    subprocess.run([sys.executable, '-c', _killed_writer(2500)], check=False, cwd=bag_dir)
+    # committed batches stay (1000 messages each); the half batch is gone
     m = rosbag2_py.Info().read_metadata('crash', '')
-    assert (m.message_count, m.starting_time, m.duration) == (400, 1000, 399)
+    assert (m.message_count, m.starting_time, m.duration) == (2000, 1000, 1999)
+    assert m.topics_with_message_count[0].message_count == 2000
+    assert read_metadata('crash').message_count in (0, 1000, 2000)  # refreshed now and then
+    reader = rosbag2_py.SequentialReader()
+    reader.open(rosbag2_py.StorageOptions(uri='crash'), rosbag2_py.ConverterOptions())
+    n = 0
+    while reader.has_next():
+        reader.read_next()
+        n += 1
+    assert n == 2000
+    os.remove('crash/metadata.yaml')  # even without it, info rebuilds it from the file
+    m = rosbag2_py.Info().read_metadata('crash', '')
+    assert (m.message_count, m.starting_time, m.duration) == (2000, 1000, 1999)
+
+
+def test_rosbags_reads_a_killed_writers_bag(bag_dir):
+    subprocess.run([sys.executable, '-c', _killed_writer(1500)], check=False, cwd=bag_dir)
+    with Reader('crash') as reader:  # metadata.yaml from the first batch's refresh
+        assert sum(1 for _ in reader.messages()) == 1000
 
 
 def test_format_bag_metadata_without_topics():
@@ -163,3 +180,15 @@ def test_format_bag_metadata_without_topics():
     text = format_bag_metadata(BagMetadata(storage_identifier='sqlite3'))
     assert 'Files:             \n' in text
     assert text.endswith('Topic information: \n')
+
+
+def test_reindex_rebuilds_metadata(bag_dir):
+    import labkit
+    subprocess.run([sys.executable, '-c', _killed_writer(1200)], check=False, cwd=bag_dir)
+    r = labkit.ros2('bag reindex crash')
+    assert r.returncode == 0, r.stderr
+    m = read_metadata('crash')
+    assert (m.version, m.message_count, m.relative_file_paths) == (5, 1000, ['crash_0.db3'])
+    assert m.topics_with_message_count[0].topic_metadata.type == 'std_msgs/msg/String'
+    assert labkit.ros2('bag reindex crash/crash_0.db3').stderr == \
+        '[ERROR] [ros2bag]: Must specify a bag directory\n'

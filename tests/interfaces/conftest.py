@@ -4,8 +4,7 @@ import pytest
 
 import labkit.interfaces as li
 
-DATA = os.path.join(os.path.dirname(__file__), 'data')
-TEST_SHARE = os.path.join(DATA, 'share')
+from ifc_paths import DATA, TEST_SHARE  # noqa: F401
 
 
 @pytest.fixture(scope='module')

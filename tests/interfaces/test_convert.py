@@ -100,7 +100,7 @@ def test_yaml_and_csv_match_rosidl_runtime_py_for_recorded_samples(test_msgs):
     import os
     import sys
 
-    from conftest import DATA
+    from ifc_paths import DATA
     sys.path.insert(0, os.path.join(os.path.dirname(__file__), 'tools'))
     try:
         from make_convert_reference import CASES

@@ -118,7 +118,7 @@ def test_every_bundled_file_parses_like_rosidl_adapter():
     import os
     import sys
 
-    from conftest import DATA, TEST_SHARE
+    from ifc_paths import DATA, TEST_SHARE
     sys.path.insert(0, os.path.join(os.path.dirname(__file__), 'tools'))
     try:
         import make_parser_reference as ref

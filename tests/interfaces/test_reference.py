@@ -11,7 +11,7 @@ import numpy  # noqa: F401
 import pytest
 
 import labkit.interfaces as li
-from conftest import DATA
+from ifc_paths import DATA
 
 with open(os.path.join(DATA, 'rclpy_reference.json'), encoding='utf-8') as f:
     REF = json.load(f)

@@ -140,7 +140,7 @@ def test_interface_show_matches_the_real_verb_for_every_interface(test_msgs):
     import json
     import os
 
-    from conftest import DATA
+    from ifc_paths import DATA
     with open(os.path.join(DATA, 'interface_show_reference.json')) as f:
         expected = json.load(f)
     modes = {'default': {}, 'all': {'all_comments': True}, 'none': {'no_comments': True}}

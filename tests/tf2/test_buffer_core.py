@@ -220,3 +220,31 @@ def test_frames_yaml_and_string():
     assert "  most_recent_transform: 1704067201.000000\n" in yaml_text
     assert "r: \n  parent: 'map'\n  broadcaster: 'dyn'\n  rate: 2.000\n" in yaml_text
     assert BufferCore().all_frames_as_yaml() == "[]"
+
+
+def test_long_chain_matches_matrix_product():
+    import numpy as np
+    from labkit.tf2.tree import matrix
+    rng = np.random.default_rng(7)
+    b = BufferCore()
+    product = np.identity(4)
+    prefixes = [product]
+    for i in range(10):
+        x, y, z = rng.uniform(-2, 2, 3)
+        q = quaternion_from_euler(*rng.uniform(-3, 3, 3))
+        t = tf("f%d" % i, "f%d" % (i + 1), x, y, z)
+        r = t.transform.rotation
+        r.x, r.y, r.z, r.w = (float(v) for v in q)
+        b.set_transform(t, "a")
+        product = product @ matrix((x, y, z), q)
+        prefixes.append(product)
+    got = b.lookup_transform_core("f0", "f10", Time())
+    tr, ro = got.transform.translation, got.transform.rotation
+    m = matrix((tr.x, tr.y, tr.z), (ro.x, ro.y, ro.z, ro.w))
+    assert np.allclose(m, product)
+    back = b.lookup_transform_core("f10", "f3", Time())
+    tr, ro = back.transform.translation, back.transform.rotation
+    m = matrix((tr.x, tr.y, tr.z), (ro.x, ro.y, ro.z, ro.w))
+    expected = np.linalg.inv(product) @ prefixes[3]
+    assert np.allclose(m, expected)
+

@@ -13,7 +13,8 @@ WORKSPACE_MODULES = ('facer_', 'ws_')
 @pytest.fixture
 def clean_env(monkeypatch):
     """Undo what sourcing a workspace does: env vars, sys.path, executables, interfaces."""
-    import labkit.ament  # noqa: F401  (registers the ament_index_python name, magics)
+    from labkit import plugins
+    plugins.register_all()      # ament_index_python, launch names; magics; ros2 launch
     from labkit import compat, executables
     from labkit.interfaces import registry
     for var in ('AMENT_PREFIX_PATH', 'PYTHONPATH', 'COLCON_PREFIX_PATH'):

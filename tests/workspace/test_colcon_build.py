@@ -188,7 +188,7 @@ def test_overriding_a_bundled_package(ws):
     facer_ws.python_package(str(ws / 'src'), 'turtlesim', [])
     r = build('build')
     assert "\t'turtlesim' is in: /opt/ros/humble\n" in r.stderr
-    assert r.stdout.endswith('Summary: 1 package finished [0.99s]\n')
+    assert r.stdout.endswith('Finished <<< turtlesim [0.78s]\n\nSummary: 1 package finished [1.03s]\n')
 
 
 def test_magics_are_registered_and_print_like_a_terminal(facer, capsys):
@@ -201,3 +201,55 @@ def test_magics_are_registered_and_print_like_a_terminal(facer, capsys):
     assert labkit.ros2('pkg executables facer_input').stdout == 'facer_input capture_image\n'
     magics.MAGICS['rosdep']('install -i --from-path src --rosdistro humble -y')
     assert capsys.readouterr().out.endswith('#All required rosdeps installed successfully\n')
+
+
+MIXED_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(ws_mixed)
+find_package(ament_cmake REQUIRED)
+find_package(ament_cmake_python REQUIRED)
+find_package(rclpy REQUIRED)
+ament_python_install_package(${PROJECT_NAME})
+install(PROGRAMS scripts/hello.py DESTINATION lib/${PROJECT_NAME})
+install(DIRECTORY launch DESTINATION share/${PROJECT_NAME})
+ament_package()
+"""
+
+HELLO = """#!/usr/bin/env python3
+import rclpy
+from ws_mixed.words import WORD
+
+
+def main():
+    rclpy.init()
+    node = rclpy.create_node('hello')
+    node.get_logger().info(WORD)
+    node.destroy_node()
+    rclpy.shutdown()
+
+
+if __name__ == '__main__':
+    main()
+"""
+
+
+def test_ament_cmake_python_package_and_installed_script(ws):
+    import facer_ws
+    root = str(ws / 'src' / 'ws_mixed')
+    facer_ws.write(root, 'package.xml', facer_ws.PACKAGE_XML.format(
+        name='ws_mixed', build_type='ament_cmake', deps=facer_ws.deps_xml([
+            ('buildtool_depend', 'ament_cmake'), ('buildtool_depend', 'ament_cmake_python'),
+            ('exec_depend', 'rclpy')])))
+    facer_ws.write(root, 'CMakeLists.txt', MIXED_CMAKE)
+    facer_ws.write(root, 'ws_mixed/__init__.py', '')
+    facer_ws.write(root, 'ws_mixed/words.py', "WORD = 'mixed hello'\n")
+    facer_ws.write(root, 'launch/empty.launch.py', '')
+    os.chmod(facer_ws.write(root, 'scripts/hello.py', HELLO), 0o755)
+    r = build()
+    assert r.returncode == 0, r.text()
+    assert (ws / 'install/ws_mixed/lib/python3.10/site-packages/ws_mixed/words.py').is_file()
+    assert (ws / 'install/ws_mixed/share/ws_mixed/launch/empty.launch.py').is_file()
+    source.run('install/setup.bash')
+    assert labkit.ros2('pkg executables ws_mixed').stdout == 'ws_mixed hello.py\n'
+    job = labkit.ros2('run ws_mixed hello.py')
+    job.wait(1.0)
+    assert any(line.endswith('[hello]: mixed hello') for line in job.output), job.output

@@ -31,9 +31,17 @@ class TransformListener:
 
             def run_func():
                 self.executor.add_node(self.node)
-                self.executor.spin()
+                try:
+                    self.executor.spin()
+                except Exception as exc:
+                    # the context was shut down under the spin: the thread just ends
+                    if type(exc).__name__ != "ExternalShutdownException":
+                        raise
                 self.executor.remove_node(self.node)
 
+            # labkit's virtual time adopts a thread from its first line only when its target
+            # comes from rclpy (process._spins_rclpy); this one spins rclpy, so say so
+            run_func.__module__ = SingleThreadedExecutor.spin.__module__
             self.dedicated_listener_thread = threading.Thread(target=run_func, daemon=True)
             self.dedicated_listener_thread.start()
 

@@ -1,0 +1,67 @@
+"""The package check and PACKAGE VERSIONS: labkit and the Python packages it needs.
+
+ros2doctor compares local ROS packages with the rosdistro's latest releases
+(online). labkit's "packages" are its Python dependencies: the check says
+whether each installed version meets labkit's requirement, offline.
+"""
+from importlib import metadata
+
+from labkit.doctor.api import Report, Result
+
+DISTRIBUTION = 'labkit'
+
+
+def requirements():
+    """[(distribution name, specifier text)] that labkit declares."""
+    from packaging.requirements import Requirement
+    out = []
+    for text in metadata.requires(DISTRIBUTION) or []:
+        req = Requirement(text)
+        if req.marker is None or req.marker.evaluate():
+            out.append((req.name, req.specifier))
+    return out
+
+
+def local_version(name):
+    try:
+        return metadata.version(name)
+    except metadata.PackageNotFoundError:
+        return None
+
+
+class PackageCheck:
+    category = 'package'
+
+    def check(self, doctor):
+        result = Result()
+        try:
+            wanted = requirements()
+        except metadata.PackageNotFoundError:
+            doctor.error('local package info is not found.')
+            result.add_error()
+            return result
+        for name, spec in wanted:
+            have = local_version(name)
+            if have is None:
+                doctor.error(f'{name} is not installed (labkit needs {name}{spec}).')
+                result.add_error()
+            elif spec and not spec.contains(have, prereleases=True):
+                doctor.warn(f'{name} does not meet labkit\'s requirement. '
+                            f'local: {have}, required: {spec}')
+                result.add_warning()
+        return result
+
+
+class PackageReport:
+    category = 'package'
+
+    def report(self, doctor):
+        report = Report('PACKAGE VERSIONS')
+        report.add_to_report(DISTRIBUTION, f'local={local_version(DISTRIBUTION)}')
+        try:
+            wanted = requirements()
+        except metadata.PackageNotFoundError:
+            return report
+        for name, spec in sorted(wanted, key=lambda r: r[0].lower()):
+            report.add_to_report(name, f'required={spec}, local={local_version(name) or ""}')
+        return report

@@ -1,0 +1,123 @@
+"""ros2 doctor: ros2doctor's checks, report sections and output shape, on labkit."""
+import platform
+import re
+
+import labkit
+from labkit.doctor.api import Report, format_report
+
+
+def _turtlesim_with_publisher():
+    labkit.ros2("run turtlesim turtlesim_node")
+    labkit.ros2("topic pub -r 1 /turtle1/cmd_vel geometry_msgs/msg/Twist '{}'")
+    labkit.sleep(0.5)
+
+
+def test_empty_graph_all_checks_pass():
+    result = labkit.ros2("doctor")
+    assert result.returncode == 0
+    assert result.stdout == "\nAll 5 checks passed\n\n"
+    assert result.stderr == ""
+
+
+def test_topic_warnings_do_not_fail_without_include_warnings():
+    _turtlesim_with_publisher()
+    result = labkit.ros2("doctor")
+    warnings = result.stderr.splitlines()
+    assert "labkit/doctor/topic.py: " in warnings[0]
+    assert any(re.fullmatch(r"labkit/doctor/topic\.py: \d+: UserWarning: Publisher without "
+                            r"subscriber detected on /turtle1/pose\.", w) for w in warnings)
+    assert not any("/turtle1/cmd_vel" in w for w in warnings)   # turtlesim subscribes to it
+    assert result.stdout == "\nAll 5 checks passed\n\n"
+
+
+def test_subscriber_without_publisher_and_include_warnings():
+    labkit.ros2("run turtlesim turtlesim_node")
+    result = labkit.ros2("doctor --include-warnings")
+    assert "UserWarning: Subscriber without publisher detected on /turtle1/cmd_vel." \
+        in result.stderr
+    assert result.stdout == "\n1/5 check(s) failed\n\nFailed modules: topic\n"
+    failed = labkit.ros2("wtf -iw -rf")
+    assert failed.stdout.startswith("\n1/5 check(s) failed\n\nFailed modules: topic\n\n"
+                                    "   TOPIC LIST\n")
+    assert "   PLATFORM INFORMATION" not in failed.stdout
+
+
+def test_qos_incompatibility_is_an_error():
+    from labkit import rclpy
+    from labkit.interfaces import get_type
+    from labkit.rclpy.qos import QoSProfile, ReliabilityPolicy
+    String = get_type("std_msgs/msg/String")
+    rclpy.init()
+    node = rclpy.create_node("qos_demo")
+    node.create_publisher(String, "chatter",
+                          QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT))
+    node.create_subscription(String, "chatter", lambda m: None, QoSProfile(depth=10))
+    result = labkit.ros2("doctor")
+    assert "UserWarning: ERROR: QoS compatibility error found on topic '/chatter': " \
+        "Best effort publisher and reliable subscription;" in result.stderr
+    assert "Failed modules: middleware" in result.stdout
+    report = labkit.ros2("doctor --report").stdout
+    section = report.split("   QOS COMPATIBILITY LIST\n")[1].split("\n\n")[0].splitlines()
+    assert section == [
+        "topic [type]            : /chatter [std_msgs/msg/String]",
+        "publisher node          : qos_demo",
+        "subscriber node         : qos_demo",
+        "compatibility status    : ERROR: Best effort publisher and reliable subscription;"]
+
+
+def test_report_sections_order_and_alignment():
+    _turtlesim_with_publisher()
+    out = labkit.ros2("doctor --report").stdout
+    names = re.findall(r"^   ([A-Z0-9 ]+)$", out, re.M)
+    assert names == ["NETWORK CONFIGURATION", "PACKAGE VERSIONS", "PLATFORM INFORMATION",
+                     "QOS COMPATIBILITY LIST", "RMW MIDDLEWARE", "ROS 2 INFORMATION",
+                     "TOPIC LIST"]
+    assert "\n   RMW MIDDLEWARE\nmiddleware name    : labkit in-process graph\n" in out
+    assert "device       : loopback only\n" in out
+    assert f"system           : {platform.system()}\n" in out
+    assert f"platform info    : {platform.platform()}\n" in out
+    assert "distribution name      : humble\n" in out
+    topics = out.split("   TOPIC LIST\n")[1].splitlines()
+    assert topics[:3] == ["topic               : /turtle1/cmd_vel",
+                          "publisher count     : 1",
+                          "subscriber count    : 1"]
+    assert "topic               : /rosout" not in out
+    assert re.search(r"^labkit +: local=\d", out, re.M)
+    assert re.search(r"^numpy +: required=>=1\.26, local=\d", out, re.M)
+
+
+def test_empty_topic_list_report():
+    out = labkit.ros2("doctor -r").stdout
+    assert out.endswith("   TOPIC LIST\ntopic               : none\n"
+                        "publisher count     : 0\nsubscriber count    : 0\n")
+    assert "compatibility status    : No publisher/subscriber pairs found" in out
+
+
+def test_format_report_padding_rule():
+    short = Report("X")
+    short.add_to_report("a", 1)
+    assert format_report(short) == ["", "   X", "a       : 1"]
+    long = Report("Y")
+    long.add_to_report("eightchr", "v")
+    assert format_report(long)[2] == "eightchr    : v"
+
+
+def test_bad_domain_id_fails_network(monkeypatch):
+    monkeypatch.setenv("ROS_DOMAIN_ID", "999")
+    result = labkit.ros2("doctor")
+    assert "UserWarning: ERROR: ROS_DOMAIN_ID is '999'" in result.stderr
+    assert "Failed modules: network" in result.stdout
+
+
+def test_other_distro_is_a_platform_warning(monkeypatch):
+    monkeypatch.setenv("ROS_DISTRO", "jazzy")
+    result = labkit.ros2("doctor --include-warnings")
+    assert "UserWarning: ROS_DISTRO is jazzy, but labkit emulates humble." in result.stderr
+    assert "Failed modules: platform" in result.stdout
+
+
+def test_doctor_listed_in_ros2_help():
+    help_text = labkit.ros2("--help").stdout
+    assert re.search(r"^  doctor +Check ROS setup and other potential issues$", help_text, re.M)
+    assert re.search(r"^  wtf +Use `wtf` as alias to `doctor`$", help_text, re.M)
+    assert "  --include-warnings, -iw" in labkit.ros2("doctor -h").stdout

@@ -1,0 +1,224 @@
+"""robot_state_publisher and joint_state_publisher as Humble's, in virtual time."""
+import math
+import os
+
+import pytest
+
+import labkit.rclpy as rclpy
+from labkit import process, robots
+from labkit.interfaces import get_type
+from labkit.rclpy.qos import DurabilityPolicy, QoSProfile
+from labkit.robots import r2d2
+
+TFMessage = get_type("tf2_msgs/msg/TFMessage")
+JointState = get_type("sensor_msgs/msg/JointState")
+String = get_type("std_msgs/msg/String")
+LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+FLEXIBLE = os.path.join(robots.share_directory("urdf_tutorial"), "urdf", "06-flexible.urdf")
+
+
+class Listener:
+    def __init__(self):
+        rclpy.init()
+        self.node = rclpy.create_node("tester")
+        self.tf, self.tf_static, self.descriptions, self.joint_states = [], [], [], []
+        self.node.create_subscription(TFMessage, "/tf", self.tf.append, 100)
+        self.node.create_subscription(TFMessage, "/tf_static", self.tf_static.append, LATCHED)
+        self.node.create_subscription(String, "/robot_description", self.descriptions.append,
+                                      LATCHED)
+        self.node.create_subscription(JointState, "/joint_states", self.joint_states.append, 10)
+
+    def spin_for(self, seconds):
+        clock = self.node.get_clock()
+        end = clock.now().nanoseconds + int(seconds * 1e9)
+        while clock.now().nanoseconds < end:
+            rclpy.spin_once(self.node, timeout_sec=(end - clock.now().nanoseconds) / 1e9)
+
+
+def by_child(messages):
+    return {t.child_frame_id: t for m in messages for t in m.transforms}
+
+
+def test_executables_are_registered():
+    from labkit import executables, plugins
+    plugins.register_all()
+    for pair in [("robot_state_publisher", "robot_state_publisher"),
+                 ("joint_state_publisher", "joint_state_publisher"),
+                 ("joint_state_publisher_gui", "joint_state_publisher_gui"), ("xacro", "xacro")]:
+        assert executables.lookup(*pair) is not None
+
+
+def test_rsp_static_dynamic_and_description():
+    with open(r2d2.urdf_path()) as handle:
+        description = handle.read()
+    rsp = r2d2.start_robot_state_publisher(description, echo=False)
+    tester = Listener()
+    tester.spin_for(0.1)
+    assert [line.split("]: ")[1] for line in rsp.output] == [
+        "got segment " + n for n in ["axis", "body", "box", "head", "leg1", "leg2", "rod"]]
+    static = by_child(tester.tf_static)
+    assert sorted((t.header.frame_id, c) for c, t in static.items()) == [
+        ("axis", "leg1"), ("axis", "leg2"), ("rod", "box")]
+    assert static["leg2"].transform.translation.y == pytest.approx(-0.3)
+    assert tester.descriptions[-1].data == description
+    assert tester.tf == []                         # nothing moves before a JointState
+
+    pub = tester.node.create_publisher(JointState, "joint_states", 10)
+    msg = JointState(name=["swivel", "tilt", "periscope", "unknown"],
+                     position=[math.pi / 2, -0.25, -0.1, 1.0])
+    msg.header.stamp = tester.node.get_clock().now().to_msg()
+    pub.publish(msg)
+    tester.spin_for(0.1)
+    moving = by_child(tester.tf)
+    assert sorted(moving) == ["body", "head", "rod"]
+    head = moving["head"]
+    assert head.header.frame_id == "body"
+    assert head.header.stamp == msg.header.stamp
+    assert (head.transform.rotation.z, head.transform.rotation.w) == pytest.approx(
+        (math.sin(math.pi / 4), math.cos(math.pi / 4)))
+    assert moving["rod"].transform.translation.z == pytest.approx(0.15 - 0.1)
+    assert moving["body"].transform.rotation.y == pytest.approx(math.sin(-0.125))
+
+
+def test_rsp_throttles_by_publish_frequency_and_checks_lengths():
+    with open(r2d2.urdf_path()) as handle:
+        rsp = r2d2.start_robot_state_publisher(handle.read(), echo=False)
+    tester = Listener()
+    pub = tester.node.create_publisher(JointState, "joint_states", 10)
+    stamp = tester.node.get_clock().now().to_msg()
+    for _ in range(3):                          # same stamp: within 1/20 s -> one publish
+        msg = JointState(name=["swivel"], position=[0.5])
+        msg.header.stamp = stamp
+        pub.publish(msg)
+        tester.spin_for(0.01)
+    assert len(tester.tf) == 1
+    pub.publish(JointState(name=["swivel", "tilt"], position=[0.5]))
+    tester.spin_for(0.01)
+    pub.publish(JointState(name=["swivel"]))
+    tester.spin_for(0.01)
+    assert len(tester.tf) == 1
+    text = "\n".join(rsp.output)
+    assert "Robot state publisher ignored an invalid JointState message" in text
+    assert 'ignored a JointState message about joint(s) "swivel"(,...) whose position' in text
+
+
+def test_rsp_without_description_is_fatal():
+    proc = process.start(["robot_state_publisher", "robot_state_publisher"], echo=False)
+    labkit_sleep(0.1)
+    text = "\n".join(proc.output)
+    assert "[FATAL]" in text and "robot_description parameter must not be empty" in text
+    assert proc.returncode not in (None, 0)
+
+
+def test_rsp_with_malformed_description(tmp_path):
+    bad = tmp_path / "bad.urdf"
+    bad.write_text("<robot name='x'><link name='a'/><link name='b'/></robot>")
+    proc = process.start(["robot_state_publisher", "robot_state_publisher", str(bad)], echo=False)
+    labkit_sleep(0.1)
+    text = "\n".join(proc.output)
+    assert "Unable to initialize urdf::model from robot description" in text
+    assert "root link" in text
+
+
+def labkit_sleep(seconds):
+    import labkit
+    labkit.sleep(seconds)
+
+
+def test_rsp_file_argument_and_jsp_pipeline():
+    """joint_state_publisher reads /robot_description and drives robot_state_publisher."""
+    process.start(["robot_state_publisher", "robot_state_publisher", FLEXIBLE], echo=False)
+    jsp = process.start(["joint_state_publisher", "joint_state_publisher"], echo=False)
+    tester = Listener()
+    tester.spin_for(0.35)
+    assert "Waiting for robot_description" in jsp.output[0]
+    assert len(tester.joint_states) in (3, 4)              # 10 Hz
+    js = tester.joint_states[-1]
+    assert list(js.name) == ["right_front_wheel_joint", "right_back_wheel_joint",
+                             "left_front_wheel_joint", "left_back_wheel_joint",
+                             "gripper_extension", "left_gripper_joint", "right_gripper_joint",
+                             "head_swivel"]
+    # zero, or the middle of the limits when 0 is outside them (gripper_extension: -0.38..0)
+    assert list(js.position) == [0.0] * 8
+    assert sorted(by_child(tester.tf)) == ["gripper_pole", "head", "left_front_wheel",
+                                           "left_back_wheel", "left_gripper",
+                                           "right_back_wheel", "right_front_wheel",
+                                           "right_gripper"] or len(by_child(tester.tf)) == 8
+    assert len(by_child(tester.tf_static)) == 7
+
+
+def test_jsp_centres_limits_and_zeros_parameter(tmp_path):
+    from labkit.robots.joint_state_publisher import free_joints_of
+    text = ("<robot name='c'><link name='a'/><link name='b'/><link name='c'/>"
+            "<joint name='lift' type='prismatic'><parent link='a'/><child link='b'/>"
+            "<limit lower='0.2' upper='1.0' effort='1' velocity='1'/></joint>"
+            "<joint name='spin' type='continuous'><parent link='b'/><child link='c'/></joint>"
+            "</robot>")
+    free, order, _ = free_joints_of(text)
+    assert order == ["lift", "spin"]
+    assert free["lift"]["position"] == pytest.approx(0.6)
+    assert (free["spin"]["min"], free["spin"]["max"]) == (-math.pi, math.pi)
+    free, _, _ = free_joints_of(text, {"lift": 0.3})
+    assert free["lift"]["position"] == 0.3
+    with pytest.raises(ValueError, match='Limits must be specified for joint "j"'):
+        free_joints_of("<robot name='x'><joint name='j' type='revolute'/></robot>")
+
+
+def test_gui_sliders_move_the_joints():
+    pytest.importorskip("ipywidgets")
+    from labkit.robots import sliders
+    process.start(["robot_state_publisher", "robot_state_publisher", FLEXIBLE], echo=False)
+    process.start(["joint_state_publisher_gui", "joint_state_publisher_gui"], echo=False)
+    tester = Listener()
+    tester.spin_for(0.15)
+    panel = sliders.panel()
+    assert sorted(panel.sliders) == sorted(tester.joint_states[-1].name)
+    panel.sliders["head_swivel"].value = 1.0
+    tester.spin_for(0.15)
+    js = tester.joint_states[-1]
+    assert dict(zip(js.name, js.position))["head_swivel"] == pytest.approx(1.0)
+    head = by_child(tester.tf)["head"]
+    assert head.transform.rotation.z == pytest.approx(math.sin(0.5))
+
+
+def test_r2d2_demo_walks():
+    rsp, walker = r2d2.start_demo(echo=False)
+    tester = Listener()
+    tester.spin_for(1.0)
+    assert walker.output == ["[INFO] [1704067200.000000000] [state_publisher]: "
+                             "state_publisher started"]
+    odom = [t for m in tester.tf for t in m.transforms if t.child_frame_id == "axis"]
+    assert 25 <= len(odom) <= 31                               # 30 Hz
+    last = odom[-1].transform.translation
+    assert math.hypot(last.x, last.y) == pytest.approx(2.0)
+    assert last.z == pytest.approx(0.7)
+    assert {"body", "head", "rod"} <= set(by_child(tester.tf))
+
+
+def test_rsp_parameters_and_new_description():
+    with open(r2d2.urdf_path()) as handle:
+        r2d2.start_robot_state_publisher(handle.read(), echo=False)
+    import labkit
+    names = labkit.ros2("param list /robot_state_publisher").stdout.split()
+    assert {"frame_prefix", "ignore_timestamp", "publish_frequency", "robot_description",
+            "use_sim_time", "qos_overrides./tf.publisher.depth",
+            "qos_overrides./joint_states.subscription.reliability"} <= set(names)
+    result = labkit.ros2("param set /robot_state_publisher publish_frequency 2000.0")
+    assert "publish_frequency must be between 0.0 and 1000.0" in result.stdout + result.stderr
+    tester = Listener()
+    tester.spin_for(0.05)
+    tester.tf_static.clear()
+    from labkit.robots.urdf import load
+    flexible = open(FLEXIBLE).read()
+    SetParameters = get_type("rcl_interfaces/srv/SetParameters")
+    Parameter = get_type("rcl_interfaces/msg/Parameter")
+    ParameterValue = get_type("rcl_interfaces/msg/ParameterValue")
+    client = tester.node.create_client(SetParameters, "/robot_state_publisher/set_parameters")
+    assert client.wait_for_service(timeout_sec=1.0)
+    future = client.call_async(SetParameters.Request(parameters=[Parameter(
+        name="robot_description", value=ParameterValue(type=4, string_value=flexible))]))
+    rclpy.spin_until_future_complete(tester.node, future, timeout_sec=1.0)
+    assert future.result().results[0].successful
+    tester.spin_for(0.1)
+    assert len(by_child(tester.tf_static)) == len(load(flexible).fixed_joints())
+    assert tester.descriptions[-1].data == flexible

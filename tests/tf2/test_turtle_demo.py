@@ -1,0 +1,98 @@
+"""The turtle_tf2_py demo: turtle2 chases turtle1 through TF (virtual time)."""
+import math
+
+import pytest
+
+import labkit
+import labkit.rclpy as rclpy
+from labkit import process
+from labkit.interfaces import get_type
+from labkit.rclpy.time import Time
+from labkit.tf2 import ros as tf2_ros
+
+Pose = get_type("turtlesim/msg/Pose")
+
+
+def run(*argv):
+    return process.start(list(argv), echo=False)
+
+
+def start_demo(target="turtle1"):
+    run("turtlesim", "turtlesim_node")
+    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-r", "__node:=broadcaster1",
+        "-p", "turtlename:=turtle1")
+    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-r", "__node:=broadcaster2",
+        "-p", "turtlename:=turtle2")
+    return run("turtle_tf2_py", "turtle_tf2_listener", "--ros-args", "-r", "__node:=listener",
+               "-p", f"target_frame:={target}")
+
+
+class Watcher:
+    def __init__(self):
+        rclpy.init()
+        self.node = rclpy.create_node("watcher")
+        self.poses = {}
+        for name in ("turtle1", "turtle2"):
+            self.node.create_subscription(
+                Pose, f"/{name}/pose", lambda m, n=name: self.poses.__setitem__(n, m), 10)
+        self.buffer = tf2_ros.Buffer()
+        tf2_ros.TransformListener(self.buffer, self.node)
+
+    def spin_for(self, seconds):
+        clock = self.node.get_clock()
+        end = clock.now().nanoseconds + int(seconds * 1e9)
+        while clock.now().nanoseconds < end:
+            rclpy.spin_once(self.node, timeout_sec=0.1)
+
+    def distance(self):
+        a, b = self.poses["turtle1"], self.poses["turtle2"]
+        return math.hypot(a.x - b.x, a.y - b.y)
+
+
+def test_turtle2_follows_turtle1():
+    listener = start_demo()
+    w = Watcher()
+    w.spin_for(3.0)
+    out = "\n".join(listener.output)
+    assert "Successfully spawned turtle2" in out
+    assert "turtle2" in w.poses
+    start = w.distance()
+    assert start > 3.0                       # spawned at (4, 2), turtle1 at the centre
+    t = w.buffer.lookup_transform("world", "turtle1", Time())
+    assert t.transform.translation.x == w.poses["turtle1"].x
+    w.spin_for(15.0)
+    assert w.distance() < 0.5 * start
+    # and it keeps following when turtle1 moves
+    Twist = get_type("geometry_msgs/msg/Twist")
+    pub = w.node.create_publisher(Twist, "/turtle1/cmd_vel", 10)
+    for _ in range(3):
+        msg = Twist()
+        msg.linear.x = 2.0
+        pub.publish(msg)
+        w.spin_for(0.5)
+    moved = w.distance()
+    w.spin_for(15.0)
+    assert w.distance() < moved
+    labkit.reset()
+
+
+def test_carrot_frames():
+    run("turtlesim", "turtlesim_node")
+    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-p", "turtlename:=turtle1")
+    run("turtle_tf2_py", "fixed_frame_tf2_broadcaster")
+    w = Watcher()
+    w.spin_for(1.0)
+    t = w.buffer.lookup_transform("world", "carrot1", Time())
+    p = w.poses["turtle1"]
+    # 2 m to the left of turtle1, which faces +x at the start
+    assert (t.transform.translation.x, t.transform.translation.y) == pytest.approx(
+        (p.x, p.y + 2.0))
+    labkit.reset()
+    run("turtlesim", "turtlesim_node")
+    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-p", "turtlename:=turtle1")
+    run("turtle_tf2_py", "dynamic_frame_tf2_broadcaster")
+    w = Watcher()
+    w.spin_for(1.0)
+    t = w.buffer.lookup_transform("turtle1", "carrot1", Time())
+    assert math.hypot(t.transform.translation.x, t.transform.translation.y) == \
+        pytest.approx(10.0)
