@@ -145,7 +145,9 @@ def build_ament_python(ctx):
     site = os.path.join(ctx.prefix, PYTHON_DIR)
     _clean(ctx.prefix)       # a rebuild replaces the package's install space
     os.makedirs(site, exist_ok=True)
-    res.stdout.append('running egg_info' if not ctx.symlink else 'running develop')
+    res.stdout += (['running egg_info', 'running build', 'running build_py', 'running install',
+                    'running install_lib'] if not ctx.symlink else
+                   ['running develop', 'running egg_info', 'running build_ext'])
 
     # python packages: copied into site-packages, or reached through build/<pkg> links
     tops = set()
@@ -191,10 +193,17 @@ def build_ament_python(ctx):
     # console scripts: where setup.cfg sends them ($base/lib/<pkg>), else bin/
     key = 'script_dir' if ctx.symlink else 'install_scripts'
     script_dir = (cfg.get(key) or '$base/bin').replace('$base', ctx.prefix)
+    if not ctx.symlink:
+        res.stdout += ['running install_data', 'running install_egg_info',
+                       'running install_scripts']
     for exe, target in scripts:
         module, _, func = target.partition(':')
         _write(os.path.join(script_dir, exe), _script_text(name, version, exe, module, func),
                0o755)
+        res.stdout.append(f'Installing {exe} script to {_shown(script_dir)}')
+    if not ctx.symlink:
+        res.stdout.append("writing list of installed files to '%s'"
+                          % _shown(os.path.join(ctx.build_dir, 'install.log')))
 
     # data_files, as setuptools installs them (relative to the install prefix)
     installed = set()

@@ -126,7 +126,10 @@ class _McapFile:
 
     def close(self):
         self.writer.close()
-        self.path = [p for p in os.listdir(self.writer.path) if p.endswith('.mcap')][0]
+        # rosbags names the file `<name>.mcap`; rosbag2 names it `<name>_0.mcap`
+        made = [p for p in os.listdir(self.writer.path) if p.endswith('.mcap')][0]
+        self.path = f'{self.writer.path.name}_0.mcap'
+        os.replace(self.writer.path / made, self.writer.path / self.path)
 
 
 class BagWriter:

@@ -197,7 +197,7 @@ def _description_file(args):
     return rest[0] if rest else None
 
 
-def run(node, log_name=None):
+def run(node):
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):

@@ -1,10 +1,14 @@
-"""Where robot packages live: labkit's bundled `urdf_tutorial` and
-`urdf_tutorial_r2d2` share folders, then whatever the ament index knows
-(a workspace the reader built and sourced wins over the bundled copy)."""
+"""Where robot packages live: a workspace the reader built and sourced first,
+then labkit's bundled `urdf_tutorial` (labkit/robots/prefix, a read-only
+install prefix), then whatever else the ament index knows."""
 import os
 
-SHARE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "share")
-BUNDLED = ("urdf_tutorial", "urdf_tutorial_r2d2")
+HERE = os.path.dirname(os.path.abspath(__file__))
+PREFIX = os.path.join(HERE, "prefix")
+SHARE = os.path.join(PREFIX, "share")
+BUNDLED = ("urdf_tutorial",)
+# the tutorial's r2d2.urdf.xml (the reader downloads it into urdf_tutorial_r2d2)
+R2D2_URDF = os.path.join(HERE, "data", "r2d2.urdf.xml")
 
 
 class PackageNotFoundError(KeyError):

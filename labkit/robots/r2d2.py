@@ -97,8 +97,15 @@ def main(args=None):
 
 
 def urdf_path():
+    """The reader's urdf_tutorial_r2d2 copy if a sourced workspace has it, else labkit's."""
     from labkit.robots import packages
-    return os.path.join(packages.share_directory("urdf_tutorial_r2d2"), "r2d2.urdf.xml")
+    try:
+        path = os.path.join(packages.share_directory("urdf_tutorial_r2d2"), "r2d2.urdf.xml")
+        if os.path.exists(path):
+            return path
+    except (KeyError, LookupError):
+        pass
+    return packages.R2D2_URDF
 
 
 def start_demo(echo=True):

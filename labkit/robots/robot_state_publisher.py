@@ -7,6 +7,7 @@ on the message stamps, like the C++ node); the description is republished on
 latched `/robot_description` (std_msgs/String).
 TF goes out as plain tf2_msgs/TFMessage so this room does not depend on tf2.
 """
+import functools
 import sys
 
 import labkit.rclpy as rclpy
@@ -19,6 +20,7 @@ from labkit.robots.urdf import URDFError, load
 _NS_PER_S = 1_000_000_000
 
 
+@functools.lru_cache(maxsize=1)
 def _msgs():
     return (module("tf2_msgs.msg").TFMessage, module("geometry_msgs.msg").TransformStamped,
             module("std_msgs.msg").String, module("sensor_msgs.msg").JointState)
@@ -135,8 +137,7 @@ class RobotStatePublisher(Node):
         self._description_pub.publish(msg)
 
     def _on_set_parameters(self, parameters):
-        from labkit.interfaces import module as _module
-        result = _module("rcl_interfaces.msg").SetParametersResult(successful=True)
+        result = module("rcl_interfaces.msg").SetParametersResult(successful=True)
         for p in parameters:
             if p.name == "robot_description":
                 if not p.value:

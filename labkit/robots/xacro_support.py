@@ -31,27 +31,29 @@ def process(path, mappings=None):
             doc = xacro.process_file(str(path), mappings=dict(mappings or {}))
         except Exception as exc:   # xacro raises XacroException, XML errors, NameError ...
             detail = " ".join(str(exc).split()) or type(exc).__name__
-            raise URDFError(f"Error processing xacro file '{path}': {detail}") from None
+            error = URDFError(f"Error processing xacro file '{path}': {detail}")
+            error.detail = detail
+            raise error from None
     return doc.toprettyxml(indent="  ")
 
 
 def main(args=None):
     """`xacro FILE [name:=value ...] [-o OUT]`: print the expanded URDF, like the xacro command."""
-    argv = list(sys.argv[1:] if args is None else args)
+    argv = list(sys.argv if args is None else args)[1:]      # args[0] is the program
     out = None
     if "-o" in argv:
         i = argv.index("-o")
         out = argv[i + 1]
         del argv[i:i + 2]
-    files = [a for a in argv if ":=" not in a]
+    files = [a for a in argv if ":=" not in a and a != "--ros-args"]
     mappings = dict(a.split(":=", 1) for a in argv if ":=" in a)
     if len(files) != 1:
         sys.stderr.write("usage: xacro [-o OUT] input [mappings ...]\n")
         return 2
     try:
         text = process(files[0], mappings)
-    except URDFError as exc:
-        sys.stderr.write(f"{exc}\n")
+    except URDFError as exc:        # the xacro command prints xacro's own message
+        sys.stderr.write(f"{getattr(exc, 'detail', exc)}\n")
         return 2
     if out:
         with open(out, "w", encoding="utf-8") as handle:

@@ -14,7 +14,7 @@ import math
 import sys
 import threading
 
-from labkit.interfaces import get_type
+from labkit.interfaces import copy_message, get_type
 
 __all__ = ["BufferCore", "TransformException", "ConnectivityException", "LookupException",
            "ExtrapolationException", "InvalidArgumentException", "TimeoutException",
@@ -711,14 +711,14 @@ class BufferCore:
                     self._caches[fid] = TimeCache(self._cache_ns)
 
 
-_TransformStamped = None
+_template = None
 
 
 def _transform_msg(target_frame, source_frame, t, q, stamp):
-    global _TransformStamped
-    if _TransformStamped is None:
-        _TransformStamped = get_type("geometry_msgs/msg/TransformStamped")
-    msg = _TransformStamped()
+    global _template
+    if _template is None:
+        _template = get_type("geometry_msgs/msg/TransformStamped")()
+    msg = copy_message(_template)       # much cheaper than building the nested message anew
     msg.header.stamp.sec = stamp // 10**9
     msg.header.stamp.nanosec = stamp % 10**9
     msg.header.frame_id = target_frame

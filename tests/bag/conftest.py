@@ -16,6 +16,7 @@ def bag_dir(tmp_path, monkeypatch):
     monkeypatch.setenv('TZ', 'UTC')
     time.tzset()
     yield tmp_path
+    monkeypatch.undo()  # TZ back first, then let the C library see it
     time.tzset()
 
 

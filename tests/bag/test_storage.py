@@ -150,29 +150,40 @@ def _killed_writer(n):
     ''')
 
 
+def _committed(bag):
+    """Rows the dead writer had committed (opening read-write rolls its half batch back)."""
+    db = sqlite3.connect(f'{bag}/{bag}_0.db3')
+    rows = db.execute('SELECT data FROM messages ORDER BY id').fetchall()
+    db.close()
+    return [ifc.deserialize(r[0], String).data for r in rows]
+
+
 def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
     subprocess.run([sys.executable, '-c', _killed_writer(2500)], check=False, cwd=bag_dir)
-    # committed batches stay (1000 messages each); the half batch is gone
     m = rosbag2_py.Info().read_metadata('crash', '')
-    assert (m.message_count, m.starting_time, m.duration) == (2000, 1000, 1999)
-    assert m.topics_with_message_count[0].message_count == 2000
-    assert read_metadata('crash').message_count in (0, 1000, 2000)  # refreshed now and then
+    kept = _committed('crash')
+    # whole batches (1000 messages or 0.2 s each) stay, in order; the half batch is gone
+    assert 0 < len(kept) < 2500 and kept == [str(k) for k in range(len(kept))]
+    assert (m.message_count, m.starting_time, m.duration) == (len(kept), 1000, len(kept) - 1)
+    assert m.topics_with_message_count[0].message_count == len(kept)
     reader = rosbag2_py.SequentialReader()
     reader.open(rosbag2_py.StorageOptions(uri='crash'), rosbag2_py.ConverterOptions())
     n = 0
     while reader.has_next():
         reader.read_next()
         n += 1
-    assert n == 2000
+    assert n == len(kept)
     os.remove('crash/metadata.yaml')  # even without it, info rebuilds it from the file
     m = rosbag2_py.Info().read_metadata('crash', '')
-    assert (m.message_count, m.starting_time, m.duration) == (2000, 1000, 1999)
+    assert (m.message_count, m.starting_time, m.duration) == (len(kept), 1000, len(kept) - 1)
 
 
 def test_rosbags_reads_a_killed_writers_bag(bag_dir):
     subprocess.run([sys.executable, '-c', _killed_writer(1500)], check=False, cwd=bag_dir)
-    with Reader('crash') as reader:  # metadata.yaml from the first batch's refresh
-        assert sum(1 for _ in reader.messages()) == 1000
+    kept = _committed('crash')
+    with Reader('crash') as reader:  # its metadata.yaml: from a refresh along the way
+        got = [ifc.deserialize(d, String).data for _, _, d in reader.messages()]
+    assert got == kept and len(got) > 0
 
 
 def test_format_bag_metadata_without_topics():
@@ -185,10 +196,11 @@ def test_format_bag_metadata_without_topics():
 def test_reindex_rebuilds_metadata(bag_dir):
     import labkit
     subprocess.run([sys.executable, '-c', _killed_writer(1200)], check=False, cwd=bag_dir)
+    kept = _committed('crash')
     r = labkit.ros2('bag reindex crash')
     assert r.returncode == 0, r.stderr
     m = read_metadata('crash')
-    assert (m.version, m.message_count, m.relative_file_paths) == (5, 1000, ['crash_0.db3'])
+    assert (m.version, m.message_count, m.relative_file_paths) == (5, len(kept), ['crash_0.db3'])
     assert m.topics_with_message_count[0].topic_metadata.type == 'std_msgs/msg/String'
     assert labkit.ros2('bag reindex crash/crash_0.db3').stderr == \
         '[ERROR] [ros2bag]: Must specify a bag directory\n'

@@ -5,10 +5,10 @@ import numpy as np
 import pytest
 
 from labkit import robots
-from labkit.robots import urdf
+from labkit.robots import packages, urdf  # noqa: F401
 
 SHARE = robots.share_directory("urdf_tutorial")
-R2D2 = os.path.join(robots.share_directory("urdf_tutorial_r2d2"), "r2d2.urdf.xml")
+R2D2 = robots.packages.R2D2_URDF
 
 
 def model(name):

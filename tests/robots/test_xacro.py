@@ -64,10 +64,10 @@ def test_xacro_error_names_file(tmp_path):
 def test_xacro_command_prints_urdf(tmp_path):
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        code = xacro_support.main([os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro")])
+        code = xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro")])
     assert code == 0
     assert '<robot name="macroed">' in out.getvalue()
     target = tmp_path / "model.urdf"
-    assert xacro_support.main([os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro"),
+    assert xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro"),
                                "-o", str(target)]) == 0
     assert robots.load(str(target)).name == "macroed"
