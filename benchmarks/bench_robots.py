@@ -75,6 +75,7 @@ def bench_math(n=2000):
     model = load(r2d2.urdf_path())
     moving = model.movable_joints()
     Time = get_type("builtin_interfaces/msg/Time")
+    [rsp.transform_stamped(j.parent, j.child, Time(), *j.transform(0.0)) for j in moving]
     start = time.perf_counter()
     for k in range(n):
         [rsp.transform_stamped(j.parent, j.child, Time(), *j.transform(k * 1e-3)) for j in moving]

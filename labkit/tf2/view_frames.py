@@ -146,8 +146,13 @@ def render(dot, fmt="svg"):
         return pgv.AGraph(string=dot).draw(format=fmt, prog="dot")
 
 
-def svg(source, recorded_time=None):
-    """The view_frames picture as SVG text, from a Buffer, a frame-YAML dict/str, or dot."""
+def svg(source=None, recorded_time=None, wait_time=1.0):
+    """The view_frames picture as SVG text, from a Buffer, a frame-YAML dict/str, or dot.
+
+    Without a source, listen to /tf and /tf_static for `wait_time` seconds first (a
+    notebook's view_frames, drawn in the page instead of a PDF)."""
+    if source is None:
+        source = listen(wait_time)
     if hasattr(source, "all_frames_as_yaml"):
         import yaml
         data = yaml.safe_load(source.all_frames_as_yaml())
@@ -163,6 +168,30 @@ def svg(source, recorded_time=None):
         import yaml
         dot = generate_dot(yaml.safe_load(source), recorded_time or _now())
     return SVG(render(dot, "svg").decode("utf-8"))
+
+
+def listen(wait_time=1.0):
+    """A Buffer filled by listening to TF for wait_time seconds (own context and node)."""
+    from labkit.rclpy.context import Context
+    from labkit.rclpy.executors import SingleThreadedExecutor
+    from labkit.tf2.ros import Buffer, TransformListener
+    context = Context()
+    rclpy.init(context=context)
+    try:
+        node = rclpy.create_node("view_frames", context=context)
+        buffer = Buffer()
+        TransformListener(buffer, node)
+        executor = SingleThreadedExecutor(context=context)
+        executor.add_node(node)
+        clock = node.get_clock()
+        end = clock.now().nanoseconds + int(wait_time * 1e9)
+        while clock.now().nanoseconds < end:
+            executor.spin_once(timeout_sec=(end - clock.now().nanoseconds) / 1e9)
+        executor.shutdown()
+        node.destroy_node()
+    finally:
+        rclpy.try_shutdown(context=context)
+    return buffer
 
 
 def _now():

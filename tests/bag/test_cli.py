@@ -172,3 +172,30 @@ def test_default_bag_name_uses_the_clock(bag_dir):
     rec = labkit.ros2('bag record /turtle1/pose')
     rec.stop()
     assert os.listdir('.') == ['rosbag2_2024_01_01-00_00_00']
+
+
+def _recorded_topics(bag):
+    with Reader(bag) as reader:
+        return {c.topic for c in reader.connections}
+
+
+def test_hidden_regex_and_exclude_filters(bag_dir):
+    labkit.ros2('run turtlesim turtlesim_node')
+    jobs = [labkit.ros2('bag record -a -o plain'),
+            labkit.ros2('bag record -a --include-hidden-topics -o hidden'),
+            labkit.ros2('bag record -e turtle1 -x color -o regex')]
+    labkit.sleep(0.3)
+    for job in jobs:
+        job.stop()
+    plain, hidden, regex = (_recorded_topics(b) for b in ('plain', 'hidden', 'regex'))
+    assert not any('/_action/' in t for t in plain)
+    assert '/turtle1/rotate_absolute/_action/status' in hidden
+    assert regex == {'/turtle1/pose'}
+
+
+def test_recorder_is_a_node_in_the_graph(bag_dir):
+    labkit.ros2('run turtlesim turtlesim_node')
+    rec = labkit.ros2('bag record /turtle1/pose')
+    assert '/rosbag2_recorder' in labkit.ros2('node list').stdout.split()
+    rec.stop()
+    assert '/rosbag2_recorder' not in labkit.ros2('node list').stdout.split()

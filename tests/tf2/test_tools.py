@@ -189,3 +189,11 @@ def test_view_frames_svg_for_the_book():
     assert pic.lstrip().startswith("<?xml") and "</svg>" in pic
     assert "turtle1" in pic and pic._repr_svg_() == str(pic)
     assert "No tf data received" in svg(tf2_ros.Buffer())
+
+
+def test_view_frames_svg_listens_when_given_nothing():
+    from labkit.tf2.view_frames import svg
+    run("tf2_ros", "static_transform_publisher", "--frame-id", "world", "--child-frame-id", "cam")
+    pic = svg(wait_time=0.5)
+    assert "cam" in pic and "world" in pic
+    assert "view_frames" not in labkit.ros2("node list").stdout    # its node is gone again
