@@ -11,6 +11,37 @@ RESOURCE_INDEX = os.path.join('share', 'ament_index', 'resource_index')
 # Bundled packages (turtlesim, std_msgs, ...): what a Humble binary install reports.
 SHOWN_INSTALL_PREFIX = '/opt/ros/humble'
 BUNDLED_PREFIX = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'prefix')
+_LABKIT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+_extra_bundled = []
+
+
+def add_bundled_prefix(path):
+    """Another read-only prefix inside labkit (a room's `prefix/` folder is found anyway)."""
+    path = os.path.abspath(path)
+    if path not in _extra_bundled:
+        _extra_bundled.append(path)
+
+
+def bundled_prefixes():
+    """labkit/ament/prefix, then every other labkit/<room>/prefix, then added ones."""
+    found = [BUNDLED_PREFIX]
+    try:
+        rooms = sorted(os.listdir(_LABKIT))
+    except OSError:
+        rooms = []
+    for room in rooms:
+        prefix = os.path.join(_LABKIT, room, 'prefix')
+        if prefix != BUNDLED_PREFIX and os.path.isdir(os.path.join(prefix, RESOURCE_INDEX)):
+            found.append(prefix)
+    return found + [p for p in _extra_bundled if p not in found]
+
+
+def bundled_prefix_of(name):
+    """The bundled prefix holding a package's share folder, or None."""
+    for prefix in bundled_prefixes():
+        if os.path.isfile(os.path.join(prefix, RESOURCE_INDEX, 'packages', name)):
+            return prefix
+    return None
 
 
 class PackageNotFoundError(KeyError):
@@ -43,10 +74,16 @@ def get_resources(resource_type):
 
 def bundled_package_names():
     """Packages labkit itself provides (executables, bundled interfaces and manifests)."""
-    names = set(resources('packages', BUNDLED_PREFIX))
+    names = set()
+    for prefix in bundled_prefixes():
+        names |= set(resources('packages', prefix))
     try:
         from labkit import executables
+        from labkit.ament import source
+        # labkit's own executables (built in, or registered by labkit's rooms), not the
+        # ones a sourced workspace registered
         names |= {p for p, _ in executables.BUILTIN}
+        names |= set(executables.packages()) - source.workspace_packages()
     except Exception:
         pass
     try:
@@ -77,8 +114,9 @@ def get_package_prefix(package_name):
     except LookupError:
         pass
     if package_name in bundled_package_names():
-        if os.path.isdir(os.path.join(BUNDLED_PREFIX, 'share', package_name)):
-            return BUNDLED_PREFIX
+        found = bundled_prefix_of(package_name)
+        if found is not None:
+            return found
         from labkit.interfaces import registry
         if os.path.isdir(os.path.join(registry.BUNDLED_SHARE, package_name)):
             return os.path.dirname(registry.BUNDLED_SHARE)     # <prefix>/share/<pkg>/msg
@@ -96,3 +134,19 @@ def search_paths_shown():
 
 def get_package_share_directory(package_name):
     return os.path.join(get_package_prefix(package_name), 'share', package_name)
+
+
+def shown(text):
+    """A path (or text holding paths) as a Humble machine prints it: bundled prefixes are
+    /opt/ros/humble, the sandbox home is /root (labkit.ament.files)."""
+    from labkit.ament import files
+    from labkit.interfaces import registry
+    text = str(text)
+    for prefix in bundled_prefixes() + [os.path.dirname(registry.BUNDLED_SHARE)]:
+        text = text.replace(prefix + os.sep, SHOWN_INSTALL_PREFIX + '/')
+        if text == prefix:
+            text = SHOWN_INSTALL_PREFIX
+    home = files.home()
+    if files._home is not None:
+        text = text.replace(home + os.sep, files.SHOWN_HOME + '/')
+    return text

@@ -18,6 +18,7 @@ UNDERLAY_SCRIPTS = ('/opt/ros/humble/setup.bash', '/opt/ros/humble/setup.sh',
                     '/opt/ros/humble/setup.zsh', '/opt/ros/humble/local_setup.bash')
 
 _sourced = []           # install folders, in the order sourced
+_workspace_packages = set()     # packages whose executables a workspace registered
 
 
 class SourceError(Exception):
@@ -92,6 +93,10 @@ def run(path):
         print(e, file=sys.stderr)
         return 1
     return 0
+
+
+def workspace_packages():
+    return set(_workspace_packages)
 
 
 def sourced():
@@ -177,6 +182,7 @@ def _register_executables(name, prefix, site):
     """`ros2 run <pkg> <exe>` finds what is in install/<pkg>/lib/<pkg>/ (like ros2run)."""
     from labkit import executables
     executables.unregister_package(name)
+    _workspace_packages.add(name)
     libexec = os.path.join(prefix, 'lib', name)
     registered = set()
     for egg in _egg_infos(site):

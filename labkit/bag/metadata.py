@@ -51,7 +51,7 @@ class BagMetadata:
         return format_bag_metadata(self)
 
 
-# --------------------------------------------------------------------------- YAML (yaml-cpp's look)
+# ------------------------------------------------------------------ YAML (yaml-cpp's look)
 
 def _scalar(value):
     if isinstance(value, bool):
@@ -196,8 +196,9 @@ _INDENT = ' ' * 19  # the longest field name ("Topic information: ") is the colu
 
 def format_bag_metadata(m):
     """What `ros2 bag info` prints (rosbag2_py's format_bag_meta_data)."""
-    lines = ['', 'Files:             ' + (m.relative_file_paths[0] if m.relative_file_paths else '')]
-    lines += [_INDENT + p for p in m.relative_file_paths[1:]]
+    files = m.relative_file_paths
+    lines = ['', 'Files:             ' + (files[0] if files else '')]
+    lines += [_INDENT + p for p in files[1:]]
     lines += [f'Bag size:          {format_file_size(m.bag_size)}',
               f'Storage id:        {m.storage_identifier}',
               f'Duration:          {format_duration(m.duration)}s',

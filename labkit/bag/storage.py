@@ -68,7 +68,8 @@ class _SqliteFile:
         self.commit()
         cur = self.conn.execute(
             'INSERT INTO topics (name, type, serialization_format, offered_qos_profiles) '
-            'VALUES (?, ?, ?, ?)', (t.name, t.type, t.serialization_format, t.offered_qos_profiles))
+            'VALUES (?, ?, ?, ?)',
+            (t.name, t.type, t.serialization_format, t.offered_qos_profiles))
         return cur.lastrowid
 
     def write(self, topic_id, timestamp, data):
@@ -138,7 +139,7 @@ class BagWriter:
     def __init__(self, uri, storage_id=''):
         storage_id = storage_id or DEFAULT_STORAGE_ID
         if storage_id not in STORAGE_IDS:
-            raise BagError(f"No storage could be initialized. Abort")
+            raise BagError("No storage could be initialized. Abort")
         uri = os.fspath(uri).rstrip('/') or '.'
         if os.path.isdir(uri):
             raise BagError(f"Database directory already exists ({uri}), "
@@ -304,7 +305,7 @@ class BagReader:
     def __init__(self, uri, storage_id=''):
         uri = os.fspath(uri)
         if not os.path.exists(uri):
-            raise BagError(f"No storage could be initialized from the inputs.")
+            raise BagError("No storage could be initialized from the inputs.")
         self.uri = uri
         self.metadata = read_bag_metadata(uri, storage_id)
         self.storage_id = self.metadata.storage_identifier
@@ -315,10 +316,10 @@ class BagReader:
             paths = [os.path.join(directory, p) for p in self.metadata.relative_file_paths] \
                 if os.path.isdir(uri) else [uri]
             self.files = [_SqliteReader(p) for p in paths]
-        for path in self.metadata.relative_file_paths:
-            storage_log(f"Opened database '{os.path.join(uri, path) if os.path.isdir(uri) else uri}'"
-                        ' for READ_ONLY.')
-            break
+        if self.metadata.relative_file_paths:
+            first = self.metadata.relative_file_paths[0]
+            opened = os.path.join(uri, first) if os.path.isdir(uri) else uri
+            storage_log(f"Opened database '{opened}' for READ_ONLY.")
 
     def topics(self):
         return [t.topic_metadata for t in self.metadata.topics_with_message_count]

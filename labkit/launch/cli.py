@@ -59,8 +59,8 @@ def find_launch_file(package_name, file_name):
 
 
 def _shown(path):
-    from labkit.ament import files
-    return files.display(path)
+    from labkit.ament import index
+    return index.shown(path)
 
 
 def parse_launch_arguments(arguments):
@@ -144,8 +144,8 @@ def show_arguments(path, io):
             text += '*'
         text += '\n        ' + arg.description
         if arg.default_value is not None:
-            text += '\n        (default: {})'.format(
-                ' + '.join(token.describe() for token in arg.default_value))
+            text += '\n        (default: {})'.format(_shown(
+                ' + '.join(token.describe() for token in arg.default_value)))
         io.print(text)
     if arguments:
         if conditional:

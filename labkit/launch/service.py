@@ -95,6 +95,9 @@ class LaunchService:
     def log_info(self, text, logger='launch'):
         self._print(f'[INFO] [{logger}]: {text}\n')
 
+    def log_warning(self, text, logger='launch'):
+        self._print(f'[WARNING] [{logger}]: {text}\n')
+
     def log_error(self, text, logger='launch'):
         self._print(f'[ERROR] [{logger}]: {text}\n')
 

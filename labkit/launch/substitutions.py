@@ -120,3 +120,66 @@ class NotSubstitution(Substitution):
     def perform(self, context):
         from labkit.launch.conditions import evaluate_condition_expression
         return str(not evaluate_condition_expression(context, self.value)).lower()
+
+
+class Command(Substitution):
+    """The output of a command (`Command(['xacro ', LaunchConfiguration('model')])`).
+
+    labkit has no shell: the command's first word must be a labkit executable
+    (e.g. `xacro`), whose main() runs here with its output captured.
+    """
+
+    def __init__(self, command, *, on_stderr='fail'):
+        self.command = normalize_to_list_of_substitutions(command)
+        self.on_stderr = normalize_to_list_of_substitutions(on_stderr)
+
+    def describe(self):
+        return 'Command({})'.format(' + '.join(s.describe() for s in self.command))
+
+    def perform(self, context):
+        import shlex
+        command_str = perform_substitutions(context, self.command)
+        on_stderr = perform_substitutions(context, self.on_stderr)
+        if on_stderr not in ('fail', 'ignore', 'warn', 'capture'):
+            raise SubstitutionFailure(
+                "expected 'on_stderr' to be one of: 'fail', 'ignore', 'warn' or 'capture'")
+        argv = shlex.split(command_str)
+        code, out, err = _run_labkit_command(argv)
+        if on_stderr == 'capture':
+            out, err = out + err, ''
+        if code != 0:
+            message = f'executed command failed. Command: {command_str}'
+            if err:
+                message += f'\nCaptured stderr output: {err}'
+            raise SubstitutionFailure(message)
+        if err:
+            message = (f'executed command showed stderr output. Command: {command_str}\n'
+                       f'Captured stderr output:\n{err}')
+            if on_stderr == 'fail':
+                raise SubstitutionFailure(message)
+            if on_stderr == 'warn':
+                context.launch_service.log_warning(message)
+        return out
+
+
+def _run_labkit_command(argv):
+    """(returncode, stdout, stderr) of a labkit executable named like the command."""
+    import contextlib
+    import io
+    from labkit import executables
+    if not argv:
+        raise SubstitutionFailure('file not found: empty command')
+    name = os.path.basename(argv[0])
+    target = next((executables.lookup(p, e) for p, e in executables.executables()
+                   if e == name), None)
+    if target is None:
+        raise SubstitutionFailure(
+            f"file not found: [Errno 2] No such file or directory: '{argv[0]}'")
+    main = executables.resolve(target)
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main([argv[0], *argv[1:]])
+        except SystemExit as e:
+            code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
+    return code or 0, out.getvalue(), err.getvalue()

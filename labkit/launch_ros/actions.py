@@ -72,7 +72,10 @@ class Node(Action):
         if self.__namespace is not None:
             ns = perform(context, self.__namespace)
             ros_args += ['-r', '__ns:=' + (ns if ns.startswith('/') else '/' + ns)]
+        from labkit.launch_ros.parameter_descriptions import ParameterFile
         for entry in self.__parameters:
+            if isinstance(entry, ParameterFile):
+                entry = entry.evaluate(context)
             if isinstance(entry, dict):
                 ros_args += ['--params-file', self._params_file(context, entry, service)]
             else:
@@ -110,6 +113,9 @@ class Node(Action):
 
 def _evaluate(context, value):
     """A substitution's text is read as YAML (so '3' is an int), like launch_ros does."""
+    from labkit.launch_ros.parameter_descriptions import ParameterValue
+    if isinstance(value, ParameterValue):
+        return value.evaluate(context)
     if is_a_substitution(value):
         text = perform(context, value)
         try:

@@ -80,13 +80,17 @@ class JointStatePublisher(Node):
 
     def __init__(self, description_file=None, node_name="joint_state_publisher"):
         super().__init__(node_name, automatically_declare_parameters_from_overrides=True)
-        for name, default in (("publish_default_efforts", False),
-                              ("publish_default_positions", True),
-                              ("publish_default_velocities", False), ("rate", 10),
-                              ("source_list", [""]), ("use_mimic_tags", True),
-                              ("use_smallest_joint_limits", True), ("delta", 0.0)):
+        Descriptor = module("rcl_interfaces.msg").ParameterDescriptor
+        # (name, default, ParameterType): typed like the real node, so `ros2 param` agrees
+        for name, default, ptype in (("publish_default_efforts", False, 1),
+                                     ("publish_default_positions", True, 1),
+                                     ("publish_default_velocities", False, 1),
+                                     ("rate", 10, 2), ("source_list", [], 9),
+                                     ("use_mimic_tags", True, 1),
+                                     ("use_smallest_joint_limits", True, 1),
+                                     ("delta", 0.0, 3)):
             try:
-                self.declare_parameter(name, default)
+                self.declare_parameter(name, default, Descriptor(type=ptype))
             except ParameterAlreadyDeclaredException:
                 pass
         self.free_joints, self.joint_list, self.dependent_joints = {}, [], {}

@@ -61,3 +61,13 @@ def main(args=None):
     else:
         sys.stdout.write(text)
     return 0
+
+
+def run(command_line):
+    """(returncode, stdout, stderr) of a `xacro ...` command line: what launch's
+    `Command(['xacro ', model])` substitution needs without a shell."""
+    import shlex
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(shlex.split(command_line))
+    return code, out.getvalue(), err.getvalue()

@@ -76,3 +76,30 @@ def euler_ypr(m):
     roll = math.atan2(m[2][1] / c, m[2][2] / c)
     yaw = math.atan2(m[1][0] / c, m[0][0] / c)
     return yaw, pitch, roll
+
+
+_QOS = {"/parameter_events": (("depth", 1000), ("durability", "volatile"),
+                              ("history", "keep_last"), ("reliability", "reliable")),
+        "/tf_static": (("depth", 1), ("durability", "transient_local"),
+                       ("history", "keep_last"), ("reliability", "reliable"))}
+
+
+def like_rclcpp(node, publishers=("/parameter_events",)):
+    """What an rclcpp node shows that an rclpy node does not: rclcpp's parameter texts,
+    read-only qos_overrides.<topic>.publisher.* parameters, and the /parameter_events
+    subscription of its time source."""
+    from labkit.interfaces import get_type
+    from labkit.rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
+    ParameterDescriptor = get_type("rcl_interfaces/msg/ParameterDescriptor")
+    node._labkit_parameter_dialect = "rclcpp"
+    for topic in publishers:
+        for policy, value in _QOS[topic]:
+            name = "qos_overrides.%s.publisher.%s" % (topic, policy)
+            if not node.has_parameter(name):
+                node.declare_parameter(name, value, ParameterDescriptor(
+                    description="qos policy {%s} for publisher {%s}" % (policy, topic),
+                    read_only=True))
+    qos = QoSProfile(depth=1000, history=HistoryPolicy.KEEP_LAST,
+                     reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.VOLATILE)
+    node._rclcpp_time_source_events = node.create_subscription(
+        get_type("rcl_interfaces/msg/ParameterEvent"), "/parameter_events", lambda e: None, qos)

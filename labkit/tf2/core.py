@@ -693,10 +693,8 @@ class BufferCore:
     def get_latest_common_time(self, target_frame, source_frame):
         from labkit.rclpy.time import Time
         with self._frame_lock:
-            target_id = self._validate("get_latest_common_time argument target_frame",
-                                       target_frame)
-            source_id = self._validate("get_latest_common_time argument source_frame",
-                                       source_frame)
+            target_id = self._validate("get_latest_common_time", target_frame)
+            source_id = self._validate("get_latest_common_time", source_frame)
             exc, ns, msg = self._latest_common_time(target_id, source_id)
         if exc is not None:
             raise TransformException(msg)

@@ -11,7 +11,7 @@ from labkit.interfaces import get_type
 from labkit.rclpy.node import Node
 from labkit.rclpy.parameter import Parameter
 
-from ._cpp import quaternion_from_rpy, rcutils_log, stod
+from ._cpp import like_rclcpp, quaternion_from_rpy, rcutils_log, stod
 
 USAGE = (
     "usage: static_transform_publisher [--x X] [--y Y] [--z Z] [--qx QX] [--qy QY] "
@@ -140,7 +140,7 @@ def make_node(parsed):
                  Parameter("frame_id", value=parsed["frame_id"]),
                  Parameter("child_frame_id", value=parsed["child_frame_id"])]
     node = Node(unique_node_name(), parameter_overrides=overrides)
-    node._labkit_parameter_dialect = "rclcpp"
+    like_rclcpp(node, ("/parameter_events", "/tf_static"))
     ro = ParameterDescriptor(read_only=True)
     msg = TransformStamped()
     msg.header.stamp = node.get_clock().now().to_msg()

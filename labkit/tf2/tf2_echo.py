@@ -11,7 +11,7 @@ import labkit.rclpy as rclpy
 from labkit.graph import world
 from labkit.rclpy.time import Time
 
-from ._cpp import euler_ypr, matrix3, stod_pos
+from ._cpp import euler_ypr, like_rclcpp, matrix3, stod_pos
 
 USAGE = ("Usage: tf2_echo source_frame target_frame [echo_rate]\n\n"
          "This will echo the transform from the coordinate frame of the source_frame\n"
@@ -72,7 +72,7 @@ def _run(args):
     from labkit.tf2.core import TransformException
     from labkit.tf2.ros import Buffer, TransformListener
     node = rclpy.create_node("tf2_echo")
-    node._labkit_parameter_dialect = "rclcpp"
+    like_rclcpp(node)
     clock = node.get_clock()
     buffer = Buffer()
     # rclcpp's TransformListener makes its own node, transform_listener_impl_<address>,

@@ -12,7 +12,7 @@ import time as _time
 import labkit.rclpy as rclpy
 from labkit.interfaces import get_type
 
-__all__ = ["main", "generate_dot", "svg", "render"]
+__all__ = ["main", "generate_dot", "svg", "render", "listen"]
 
 
 def main(args=None):

@@ -154,7 +154,8 @@ def test_record_all_and_mcap(bag_dir):
 def test_record_mistakes_are_one_line(bag_dir):
     r = labkit.ros2('bag record')
     assert r.returncode == 1
-    assert r.stderr == '[ERROR] [ros2bag]: Invalid choice: Must specify topic(s), --regex or --all\n'
+    assert r.stderr == \
+        '[ERROR] [ros2bag]: Invalid choice: Must specify topic(s), --regex or --all\n'
     os.mkdir('taken')
     r = labkit.ros2('bag record -o taken /chatter')
     assert r.returncode == 1 and "Output folder 'taken' already exists." in r.stderr
@@ -199,3 +200,31 @@ def test_recorder_is_a_node_in_the_graph(bag_dir):
     assert '/rosbag2_recorder' in labkit.ros2('node list').stdout.split()
     rec.stop()
     assert '/rosbag2_recorder' not in labkit.ros2('node list').stdout.split()
+
+
+def test_record_and_play_in_live_time(tmp_path):
+    import subprocess
+    import sys
+    import textwrap
+    code = textwrap.dedent('''
+        import time, labkit
+        labkit.ros2('run turtlesim turtlesim_node')
+        rec = labkit.ros2('bag record -o live /turtle1/pose')
+        time.sleep(0.3)
+        rec.stop()
+        info = labkit.ros2('bag info live').stdout
+        play = labkit.ros2('bag play live --rate 4')
+        play.wait(10)
+        print(info.split(chr(10))[8])
+        print(play.state, play.returncode)
+        labkit.reset()
+    ''')
+    done = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True,
+                          timeout=60, cwd=tmp_path,
+                          env={'LABKIT_TIME': 'live', 'PATH': '/usr/bin:/bin', 'TZ': 'UTC'})
+    assert done.returncode == 0, done.stderr
+    topic_line, state = done.stdout.splitlines()
+    assert topic_line.startswith('Topic information: Topic: /turtle1/pose | '
+                                 'Type: turtlesim/msg/Pose | Count: ')
+    assert int(topic_line.split('Count: ')[1].split(' ')[0]) > 0
+    assert state == 'done 0'

@@ -168,3 +168,57 @@ def test_died_process_is_reported(facer):
     assert ', exit code 3, cmd \'' in died[0]
     assert '/install/facer_input/lib/facer_input/capture_image --ros-args -r ' \
         '__node:=capture_image --params-file ' in died[0]
+
+
+COMMAND_LAUNCH = '''from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import Command, LaunchConfiguration
+from launch_ros.actions import Node
+from launch_ros.parameter_descriptions import ParameterValue
+
+
+def generate_launch_description():
+    text = ParameterValue(Command(['lk_shout ', LaunchConfiguration('word')]), value_type=str)
+    return LaunchDescription([
+        DeclareLaunchArgument('word', default_value='007'),
+        Node(package='turtlesim', executable='turtlesim_node',
+             parameters=[{'robot_description': text, 'number': Command('lk_shout 42')}]),
+    ])
+'''
+
+
+def shout(args=None):
+    word = args[1]
+    if word == 'fail':
+        import sys
+        sys.stderr.write('no\n')
+        return 3
+    print(word.upper(), end='')
+    return 0
+
+
+def test_command_substitution_and_parameter_value(ws, tmp_path, monkeypatch):
+    from labkit import executables
+    monkeypatch.setitem(executables._extra, ('lk_tools', 'lk_shout'),
+                        'test_launch:shout')
+    launch_file = tmp_path / 'cmd.launch.py'
+    launch_file.write_text(COMMAND_LAUNCH)
+    job = labkit.ros2(f'launch {launch_file}')
+    labkit.sleep(0.2)
+    # value_type=str keeps '007' a string; a bare Command's output is read as YAML
+    assert labkit.ros2('param get /turtlesim robot_description').stdout == \
+        'String value is: 007\n'
+    assert labkit.ros2('param get /turtlesim number').stdout == 'Integer value is: 42\n'
+    job.stop()
+    out = finished_lines(labkit.ros2(f'launch {launch_file} word:=fail'))
+    assert any('executed command failed. Command: lk_shout fail' in line for line in out), out
+
+
+def test_bundled_prefixes_and_shown_paths():
+    from labkit.ament import index
+    from ament_index_python.packages import get_package_share_directory
+    share = get_package_share_directory('turtlesim')
+    assert share.endswith('/labkit/ament/prefix/share/turtlesim')
+    assert index.shown(share) == '/opt/ros/humble/share/turtlesim'
+    assert index.shown(get_package_share_directory('std_msgs')) == \
+        '/opt/ros/humble/share/std_msgs'

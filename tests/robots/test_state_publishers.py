@@ -222,3 +222,19 @@ def test_rsp_parameters_and_new_description():
     tester.spin_for(0.1)
     assert len(by_child(tester.tf_static)) == len(load(flexible).fixed_joints())
     assert tester.descriptions[-1].data == flexible
+
+
+def test_jsp_source_list_and_zeros_parameters():
+    process.start(["robot_state_publisher", "robot_state_publisher", r2d2.urdf_path()],
+                  echo=False)
+    process.start(["joint_state_publisher", "joint_state_publisher", "--ros-args",
+                   "-p", "source_list:=[walker]", "-p", "zeros.swivel:=0.5"], echo=False)
+    tester = Listener()
+    tester.spin_for(0.15)
+    first = dict(zip(tester.joint_states[-1].name, tester.joint_states[-1].position))
+    assert first == {"tilt": 0.0, "swivel": 0.5, "periscope": 0.0}
+    pub = tester.node.create_publisher(JointState, "walker", 10)
+    pub.publish(JointState(name=["tilt", "nothing"], position=[-0.3, 9.0]))
+    tester.spin_for(0.15)
+    last = dict(zip(tester.joint_states[-1].name, tester.joint_states[-1].position))
+    assert last == {"tilt": -0.3, "swivel": 0.5, "periscope": 0.0}

@@ -71,3 +71,11 @@ def test_xacro_command_prints_urdf(tmp_path):
     assert xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro"),
                                "-o", str(target)]) == 0
     assert robots.load(str(target)).name == "macroed"
+
+
+def test_run_for_launch_command_substitution():
+    code, out, err = xacro_support.run("xacro " + os.path.join(SHARE, "urdf", "01-myfirst.urdf"))
+    assert (code, err) == (0, "")
+    assert robots.load(out).name == "myfirst"
+    code, out, err = xacro_support.run("xacro /nonexistent.xacro")
+    assert code == 2 and out == "" and "No such file or directory: /nonexistent.xacro" in err

@@ -163,6 +163,7 @@ def test_snapshot_gives_4x4_in_the_root(node):
 def test_import_aliases_resolve():
     from labkit import compat, plugins
     plugins.register_all()
+    was_active = compat.is_active()
     compat.activate()
     import importlib
     assert importlib.import_module("tf2_ros").Buffer is tf2_ros.Buffer
@@ -171,4 +172,25 @@ def test_import_aliases_resolve():
     tft = importlib.import_module("tf_transformations")
     assert tft.quaternion_from_euler(0, 0, math.pi)[2] == pytest.approx(1.0)
     assert importlib.import_module("tf2_py").LookupException is tf2_ros.LookupException
-    labkit.reset()
+    if not was_active:
+        compat.deactivate()
+
+
+def test_time_travel_keywords_as_in_the_tutorial(node):
+    buffer = tf2_ros.Buffer()
+    tf2_ros.TransformListener(buffer, node)
+    br = tf2_ros.TransformBroadcaster(node)
+    for i in range(7):
+        br.sendTransform([tf(node, "world", "turtle1", x=float(i)),
+                          tf(node, "world", "turtle2", y=1.0)])
+        spin_for(node, 1.0)
+    now = node.get_clock().now()
+    # the newest data is up to a second old: ask for the latest, and for 5 s before it
+    latest = buffer.get_latest_common_time("world", "turtle1")
+    when = latest - Duration(seconds=5.0)
+    t = buffer.lookup_transform_full(target_frame="turtle2", target_time=latest,
+                                     source_frame="turtle1", source_time=when,
+                                     fixed_frame="world", timeout=Duration(seconds=0.05))
+    assert (t.transform.translation.x, t.transform.translation.y) == pytest.approx((1.0, -1.0))
+    with pytest.raises(tf2_ros.ExtrapolationException, match="extrapolation into the future"):
+        buffer.lookup_transform("turtle2", "turtle1", now + Duration(seconds=1.0))

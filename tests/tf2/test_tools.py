@@ -197,3 +197,18 @@ def test_view_frames_svg_listens_when_given_nothing():
     pic = svg(wait_time=0.5)
     assert "cam" in pic and "world" in pic
     assert "view_frames" not in labkit.ros2("node list").stdout    # its node is gone again
+
+
+def test_static_publisher_parameters_are_read_only_like_rclcpp():
+    run("tf2_ros", "static_transform_publisher", "--x", "2", "--frame-id", "a",
+        "--child-frame-id", "b")
+    name = [n for n in labkit.ros2("node list").stdout.split()
+            if n.startswith("/static_transform_publisher_")][0]
+    params = labkit.ros2(f"param list {name}").stdout.split()
+    assert {"translation.x", "rotation.w", "frame_id", "child_frame_id",
+            "qos_overrides./tf_static.publisher.durability"} <= set(params)
+    assert labkit.ros2(f"param get {name} translation.x").stdout.strip() == \
+        "Double value is: 2.0"
+    refused = labkit.ros2(f"param set {name} frame_id c")
+    assert "parameter 'frame_id' cannot be set because it is read-only" in \
+        refused.stdout + refused.stderr

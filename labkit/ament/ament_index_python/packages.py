@@ -6,7 +6,7 @@ from labkit.ament.index import (BUNDLED_PREFIX, PackageNotFoundError,  # noqa: F
 
 def get_packages_with_prefixes():
     """name -> prefix of every package (workspaces first, then the bundled ones)."""
-    found = {name: BUNDLED_PREFIX for name in bundled_package_names()}
+    found = {name: get_package_prefix(name) for name in bundled_package_names()}
     found.update(get_resources('packages'))
     return found
 

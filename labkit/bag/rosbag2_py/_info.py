@@ -1,7 +1,11 @@
-"""rosbag2_py._info: Info().read_metadata(uri, storage_id) -> BagMetadata (str() is `ros2 bag info`)."""
+"""rosbag2_py._info: Info().read_metadata(uri, storage_id) -> BagMetadata.
+
+str(metadata) is what `ros2 bag info` prints.
+"""
+from labkit.bag.rosbag2_py._storage import BagMetadata
 from labkit.bag.storage import read_bag_metadata
 
 
 class Info:
     def read_metadata(self, uri, storage_id=''):
-        return read_bag_metadata(uri, storage_id)
+        return BagMetadata._wrap(read_bag_metadata(uri, storage_id))

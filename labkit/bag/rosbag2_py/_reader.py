@@ -28,8 +28,9 @@ class SequentialReader:
         return self._bag.topics()
 
     def get_metadata(self):
+        from labkit.bag.rosbag2_py._storage import BagMetadata
         self._require()
-        return self._bag.metadata
+        return BagMetadata._wrap(self._bag.metadata)
 
     def has_next(self):
         self._require()

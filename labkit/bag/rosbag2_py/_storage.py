@@ -1,7 +1,71 @@
 """rosbag2_py._storage: the option and metadata structs (Humble's pybind names and defaults)."""
-from labkit.bag.metadata import (  # noqa: F401  (re-exported as rosbag2_py's own)
-    BagMetadata, FileInformation, TopicInformation, TopicMetadata)
+from labkit.bag import metadata as _m
+from labkit.bag.metadata import TopicInformation, TopicMetadata  # noqa: F401 (re-exported)
 from labkit.bag.storage import DEFAULT_STORAGE_ID
+
+
+def _duration(ns):
+    from labkit.rclpy.duration import Duration
+    return Duration(nanoseconds=ns)
+
+
+def _time(ns):
+    from labkit.rclpy.time import Time
+    return Time(nanoseconds=ns)
+
+
+class FileInformation(_m.FileInformation):
+    """Times are rclpy Time/Duration in the Python API (plain ns inside labkit)."""
+
+    def __init__(self, path, starting_time=None, duration=None, message_count=0):
+        super().__init__(path, _ns(starting_time), _ns(duration), message_count)
+
+
+def _ns(value):
+    return 0 if value is None else int(getattr(value, 'nanoseconds', value))
+
+
+class BagMetadata:
+    """rosbag2_py.BagMetadata: repr() is `ros2 bag info`'s text; times are rclpy objects."""
+
+    def __init__(self, version=6, bag_size=0, storage_identifier='', relative_file_paths=(),
+                 files=(), duration=None, starting_time=None, message_count=0,
+                 topics_with_message_count=(), compression_format='', compression_mode=''):
+        self._m = _m.BagMetadata(
+            version=version, bag_size=bag_size, storage_identifier=storage_identifier,
+            relative_file_paths=list(relative_file_paths), files=list(files),
+            duration=_ns(duration), starting_time=_ns(starting_time),
+            message_count=message_count,
+            topics_with_message_count=list(topics_with_message_count),
+            compression_format=compression_format, compression_mode=compression_mode)
+
+    @classmethod
+    def _wrap(cls, metadata):
+        self = cls.__new__(cls)
+        self._m = metadata
+        return self
+
+    def __getattr__(self, name):
+        return getattr(self._m, name)
+
+    def __setattr__(self, name, value):
+        if name == '_m':
+            object.__setattr__(self, name, value)
+        elif name in ('duration', 'starting_time'):
+            setattr(self._m, name, _ns(value))
+        else:
+            setattr(self._m, name, value)
+
+    @property
+    def duration(self):
+        return _duration(self._m.duration)
+
+    @property
+    def starting_time(self):
+        return _time(self._m.starting_time)
+
+    def __repr__(self):
+        return _m.format_bag_metadata(self._m)
 
 
 class ConverterOptions:

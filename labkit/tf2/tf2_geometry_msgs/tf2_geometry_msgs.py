@@ -10,7 +10,10 @@ from labkit.tf2.ros.buffer_interface import ConvertRegistration, TransformRegist
 
 __all__ = ["do_transform_point", "do_transform_vector3", "do_transform_pose",
            "do_transform_pose_stamped", "do_transform_pose_with_covariance_stamped",
-           "transform_covariance", "to_msg_msg", "from_msg_msg"]
+           "transform_covariance", "to_msg_msg", "from_msg_msg",
+           # the real module's star-import hands these on too
+           "Point", "PointStamped", "Pose", "PoseStamped", "PoseWithCovarianceStamped",
+           "Vector3Stamped", "TransformStamped"]
 
 Point = get_type("geometry_msgs/msg/Point")
 PointStamped = get_type("geometry_msgs/msg/PointStamped")
@@ -18,6 +21,7 @@ Pose = get_type("geometry_msgs/msg/Pose")
 PoseStamped = get_type("geometry_msgs/msg/PoseStamped")
 PoseWithCovarianceStamped = get_type("geometry_msgs/msg/PoseWithCovarianceStamped")
 Vector3Stamped = get_type("geometry_msgs/msg/Vector3Stamped")
+TransformStamped = get_type("geometry_msgs/msg/TransformStamped")
 
 
 def _tq(transform):
