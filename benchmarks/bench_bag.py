@@ -145,7 +145,7 @@ def labkit_play(path, expected):
 
 
 def main():
-    n = int(sys.argv[1]) if len(sys.argv) > 1 else 20000
+    n = int(sys.argv[1]) if len(sys.argv) > 1 else 50000
     import labkit.interfaces as ifc
     msgs = _messages(n)
     best = {}

@@ -48,8 +48,10 @@ class Player:
                     if a.delay > 0:
                         self._sleep_until(node, clock.now().nanoseconds + int(a.delay * 1e9))
                     t0 = now = clock.now().nanoseconds
+                    rate = a.rate
                     for topic, data, stamp in reader.messages(topics, start):
-                        due = t0 + int((stamp - start) / a.rate)
+                        due = t0 + (stamp - start if rate == 1.0
+                                    else int((stamp - start) / rate))
                         if due > now:  # (a message already due needs no clock reading)
                             now = clock.now().nanoseconds
                             if due > now:

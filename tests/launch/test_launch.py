@@ -178,11 +178,11 @@ from launch_ros.parameter_descriptions import ParameterValue
 
 
 def generate_launch_description():
-    text = ParameterValue(Command(['lk_shout ', LaunchConfiguration('word')]), value_type=str)
     return LaunchDescription([
-        DeclareLaunchArgument('word', default_value='007'),
+        DeclareLaunchArgument('word', default_value='42'),
         Node(package='turtlesim', executable='turtlesim_node',
-             parameters=[{'robot_description': text, 'number': Command('lk_shout 42')}]),
+             parameters=[{'background_r': Command(['lk_shout ', LaunchConfiguration('word')]),
+                          'background_g': ParameterValue(Command('lk_shout 7'))}]),
     ])
 '''
 
@@ -205,16 +205,26 @@ def test_command_substitution_and_parameter_value(ws, tmp_path, monkeypatch):
     launch_file.write_text(COMMAND_LAUNCH)
     job = labkit.ros2(f'launch {launch_file}')
     labkit.sleep(0.2)
-    # value_type=str keeps '007' a string; a bare Command's output is read as YAML
-    assert labkit.ros2('param get /turtlesim robot_description').stdout == \
-        'String value is: 007\n'
-    assert labkit.ros2('param get /turtlesim number').stdout == 'Integer value is: 42\n'
+    # a command's output is read as YAML: '42' becomes an integer parameter
+    assert labkit.ros2('param get /turtlesim background_r').stdout == 'Integer value is: 42\n'
+    assert labkit.ros2('param get /turtlesim background_g').stdout == 'Integer value is: 7\n'
     job.stop()
+    # value_type=str keeps the text as it is
+    from launch import LaunchContext
+    from launch.substitutions import Command
+    from launch_ros.parameter_descriptions import ParameterValue
+
+    class Service:
+        pass
+    context = LaunchContext()
+    context.launch_service = Service()
+    assert ParameterValue(Command('lk_shout 007'), value_type=str).evaluate(context) == '007'
+    assert ParameterValue(Command('lk_shout 007')).evaluate(context) == 7
     out = finished_lines(labkit.ros2(f'launch {launch_file} word:=fail'))
     assert any('executed command failed. Command: lk_shout fail' in line for line in out), out
 
 
-def test_bundled_prefixes_and_shown_paths():
+def test_bundled_prefixes_and_shown_paths(ws):
     from labkit.ament import index
     from ament_index_python.packages import get_package_share_directory
     share = get_package_share_directory('turtlesim')
