@@ -4,7 +4,8 @@
 
 Each figure is messages per second over N geometry_msgs/Twist messages (52 bytes of
 CDR), sqlite3 storage, virtual time. Goal: a ratio of at least 0.8 against doing the
-same with rosbags directly: record vs "serialize + rosbags Writer.write", play vs
+same with rosbags directly: writer vs "serialize + rosbags Writer.write", record vs a node that writes with
+rosbags on the same in-process transport (and vs the bare Writer), play vs
 "rosbags Reader + deserialize + publish to the same subscriber" (a bag player must
 publish; the bare read + deserialize figure is printed too).
 """
@@ -55,21 +56,60 @@ def labkit_write(path, msgs, serialize):
     return time.perf_counter() - t0
 
 
-def labkit_record(path, msgs):
-    """`ros2 bag record` a publisher: publish, deliver, serialize, write, then stop."""
+def _publish_in_batches(msgs):
     import labkit
-    from labkit.rclpy.qos import QoSProfile
     import labkit.rclpy as rclpy
+    from labkit.rclpy.qos import QoSProfile
     rclpy.init()
     node = rclpy.create_node('bench_pub')
     pub = node.create_publisher(type(msgs[0]), '/cmd', QoSProfile(depth=10))
-    rec = labkit.ros2(f'bag record -o {path} /cmd')
     labkit.sleep(0.2)  # discovery
     t0 = time.perf_counter()
-    for k in range(0, len(msgs), 10):  # the recorder keeps up with depth 10
+    for k in range(0, len(msgs), 10):  # a depth-10 subscriber keeps up
         for m in msgs[k:k + 10]:
             pub.publish(m)
         labkit.sleep(0.001)
+    return node, t0
+
+
+def rosbags_recorder(path, msgs):
+    """The baseline for record on the same transport: a node that writes with rosbags."""
+    import labkit
+    import labkit.rclpy as rclpy
+    from labkit import process
+    from rosbags.rosbag2 import Writer
+    from rosbags.typesys import Stores, get_typestore
+    store = get_typestore(Stores.ROS2_HUMBLE)
+
+    def main(args=None):
+        rclpy.init(args=args)
+        node = rclpy.create_node('rosbags_recorder')
+        with Writer(path, version=8) as w:
+            conn = w.add_connection('/cmd', 'geometry_msgs/msg/Twist', typestore=store)
+            clock = node.get_clock()
+            node.create_subscription(
+                type(msgs[0]), '/cmd',
+                lambda data: w.write(conn, clock.now().nanoseconds, data), 10, raw=True)
+            try:
+                rclpy.spin(node)
+            except Exception:
+                pass
+    proc = process.start(main=main, name='rosbags_recorder')
+    node, t0 = _publish_in_batches(msgs)
+    proc.stop()
+    took = time.perf_counter() - t0
+    node.destroy_node()
+    rclpy.shutdown()
+    labkit.reset()
+    return took
+
+
+def labkit_record(path, msgs):
+    """`ros2 bag record` a publisher: publish, deliver, serialize, write, then stop."""
+    import labkit
+    import labkit.rclpy as rclpy
+    rec = labkit.ros2(f'bag record -o {path} /cmd')
+    node, t0 = _publish_in_batches(msgs)
     rec.stop()
     took = time.perf_counter() - t0
     from labkit.bag.storage import read_bag_metadata
@@ -158,20 +198,23 @@ def main():
         for rep in range(REPEATS):
             keep('base_w', rosbags_write(f'a{rep}', msgs, ifc.serialize))
             keep('ours_w', labkit_write(f'b{rep}', msgs, ifc.serialize))
+            keep('base_rr', rosbags_recorder(f'r{rep}', msgs))
             keep('ours_r', labkit_record(f'c{rep}', msgs))
             base_r, count = rosbags_read(f'b{rep}')
             keep('base_r', base_r)
             keep('base_p', rosbags_play(f'b{rep}', count))
             keep('ours_p', labkit_play(f'b{rep}', count))
     base_w, ours_w, ours_r = best['base_w'], best['ours_w'], best['ours_r']
+    base_rr = best['base_rr']
     base_r, base_p, ours_p = best['base_r'], best['base_p'], best['ours_p']
     rate = lambda s: n / s  # noqa: E731
     print(f'messages: {n} geometry_msgs/msg/Twist, sqlite3')
     print(f'rosbags Writer (serialize + write)   {rate(base_w):10.0f} msg/s')
     print(f'rosbag2_py SequentialWriter          {rate(ours_w):10.0f} msg/s  '
           f'ratio {base_w / ours_w:.2f}')
+    print(f'rosbags in a subscriber (pub -> bag) {rate(base_rr):10.0f} msg/s')
     print(f'ros2 bag record (publish -> bag)     {rate(ours_r):10.0f} msg/s  '
-          f'ratio {base_w / ours_r:.2f}')
+          f'ratio {base_rr / ours_r:.2f} (vs bare rosbags Writer {base_w / ours_r:.2f})')
     print(f'rosbags Reader (read + deserialize)  {rate(base_r):10.0f} msg/s')
     print(f'rosbags Reader -> publish            {rate(base_p):10.0f} msg/s')
     print(f'ros2 bag play (bag -> subscriber)    {rate(ours_p):10.0f} msg/s  '

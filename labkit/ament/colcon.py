@@ -86,9 +86,15 @@ def _parser():
     parser.add_argument('--log-base', default='log')
     parser.add_argument('--log-level', default=None)
     sub = parser.add_subparsers(title='colcon verbs', dest='verb', parser_class=Parser)
-    for verb, doc in (('build', 'Build a set of packages'), ('list', 'List packages, '
-                                                               'optionally in topological '
-                                                               'ordering')):
+    for verb, doc in (('build', 'Build a set of packages'),
+                      ('list', 'List packages, optionally in topological ordering'),
+                      ('test', 'Test a set of packages'),
+                      ('test-result', 'Show the test results generated when testing a set '
+                                      'of packages')):
+        if verb.startswith('test'):
+            p = sub.add_parser(verb, description=doc, help=doc)
+            p.add_argument('rest', nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
+            continue
         p = sub.add_parser(verb, description=doc, help=doc)
         p.add_argument('--base-paths', nargs='*', default=['.'], metavar='PATH',
                        help='The base paths to recursively crawl for packages '
@@ -117,7 +123,10 @@ def _parser():
                            choices=['parallel', 'sequential'])
             p.add_argument('--parallel-workers', type=int, default=os.cpu_count() or 1,
                            metavar='NUMBER')
-            p.add_argument('--cmake-args', nargs='*', metavar='*')
+            p.add_argument('--cmake-args', nargs='*', metavar='*',
+                           help='Pass arguments to CMake projects')
+            p.add_argument('--cmake-target', metavar='CMAKE_TARGET')
+            p.add_argument('--ament-cmake-args', nargs='*', metavar='*')
             p.add_argument('--cmake-clean-cache', action='store_true')
             p.add_argument('--allow-overriding', nargs='*', default=[], metavar='PKG_NAME')
         else:
@@ -143,6 +152,7 @@ def run_command(command):
     io = Streams(out, err)
     set_parse_streams(io)
     parser = _parser()
+    argv = _protect_passthrough(argv)
     try:
         args = parser.parse_args(argv)
     except ParserExit as e:
@@ -155,7 +165,8 @@ def run_command(command):
     else:
         clock = _Clock()
         try:
-            rc = (build_verb if args.verb == 'build' else list_verb)(args, io, clock)
+            verb = {'build': build_verb, 'list': list_verb}.get(args.verb, not_yet_verb)
+            rc = verb(args, io, clock)
         except RuntimeError as e:
             io.eprint(f'[{clock.now():.3f}s] ERROR:colcon:colcon {args.verb}: {e}')
             rc = 1
@@ -163,8 +174,34 @@ def run_command(command):
                             chunks)
 
 
+PASSTHROUGH = ('--cmake-args', '--ament-cmake-args', '--cmake-target', '--pytest-args',
+               '--ctest-args')
+
+
+def _protect_passthrough(argv):
+    """`--cmake-args -DBUILD_TESTING=0`: values starting with '-' are not colcon options.
+
+    colcon does the same before argparse sees them (it prefixes such values with a space).
+    """
+    result, passing = [], False
+    for arg in argv:
+        if arg in PASSTHROUGH:
+            passing = True
+            result.append(arg)
+        elif passing and arg.startswith('-') and not arg.startswith('--'):
+            result.append(' ' + arg)
+        else:
+            if arg.startswith('--'):
+                passing = False
+            result.append(arg)
+    return result
+
+
 def _select(args, io, clock, skip_dirs=()):
-    packages = workspace.discover(args.base_paths, skip_dirs)
+    warnings = []
+    packages = workspace.discover(args.base_paths, skip_dirs, warnings)
+    for warning in warnings:
+        io.eprint(f'[{clock.now():.3f}s] {warning}')
     message = workspace.duplicates(packages)
     if message:
         raise RuntimeError(message)
@@ -240,6 +277,13 @@ def _override_check(args, selected, install_base, io, clock):
         'colcon-override-check.')
 
 
+def not_yet_verb(args, io, clock):
+    """`colcon test` / `test-result`: not in labkit yet; say so rather than pretend."""
+    io.eprint(f'labkit: `colcon {args.verb}` is not available yet (it comes with the '
+              'testing chapter); `colcon build` and `colcon list` are.')
+    return 1
+
+
 def list_verb(args, io, clock):
     ordered, selected = _select(args, io, clock)
     if not args.topological_order:
@@ -290,8 +334,9 @@ def build_verb(args, io, clock):
 
     finished, failed, stderr_pkgs, events = [], [], [], []
     blocked = set()
+    all_deps = workspace.recursive_deps(ordered)
     for pkg in selected:
-        deps = workspace.recursive_deps(ordered)[pkg.name]
+        deps = all_deps[pkg.name]
         if failed and not args.continue_on_error or deps & blocked:
             blocked.add(pkg.name)
             continue

@@ -47,8 +47,34 @@ def read_package(folder):
                        groups=texts('member_of_group'))
 
 
-def discover(base_paths, skip_dirs=()):
-    """Every folder holding a package.xml below the base paths (not below a package)."""
+def check_manifest(folder):
+    """catkin_pkg's complaint about a package.xml (invalid XML, failed checks), or None."""
+    from labkit.ament import manifest
+    path = os.path.join(folder, 'package.xml')
+    shown = os.path.relpath(path)
+    try:
+        ET.parse(path)
+    except ET.ParseError as e:
+        return "Error(s) in package '%s':\nThe manifest contains invalid XML:\n%s" % (
+            shown, e)
+    try:
+        pkg = manifest.parse_package(folder)
+        pkg.filename = shown
+        pkg.validate(warnings=[])
+    except manifest.InvalidPackage as e:
+        e.package_path = shown
+        return str(e)
+    except Exception as e:     # a manifest catkin_pkg cannot read at all
+        return "Error(s) in package '%s':\n%s" % (shown, e)
+    return None
+
+
+def discover(base_paths, skip_dirs=(), warnings=None):
+    """Every folder holding a package.xml below the base paths (not below a package).
+
+    A manifest that fails catkin_pkg's checks is left out, with colcon's warning
+    appended to `warnings`.
+    """
     found = []
     skip = {os.path.abspath(d) for d in skip_dirs}
     for base in base_paths:
@@ -58,7 +84,13 @@ def discover(base_paths, skip_dirs=()):
                 dirs[:] = []
                 continue
             if 'package.xml' in files:
-                found.append(read_package(root))
+                problem = check_manifest(root)
+                if problem is None:
+                    found.append(read_package(root))
+                elif warnings is not None:
+                    warnings.append(
+                        'WARNING:colcon.colcon_core.package_identification:Failed to parse '
+                        "ROS package manifest in '%s': %s" % (os.path.relpath(root), problem))
                 dirs[:] = []
                 continue
             dirs[:] = [d for d in dirs if not d.startswith('.') and d != '__pycache__']

@@ -155,9 +155,6 @@ def _record_problem(args):
         return print_error('--exclude argument requires either --all or --regex')
     if args.output and os.path.isdir(args.output):
         return print_error(f"Output folder '{args.output}' already exists.")
-    if args.max_bag_size or args.max_bag_duration:
-        return print_error('labkit: bag splitting (--max-bag-size, --max-bag-duration) '
-                           'is not supported')
     return None
 
 

@@ -119,7 +119,7 @@ class Recorder:
             log = node.get_logger()
             log.info('Press SPACE for pausing/resuming')
             self.requested = [expand_topic(node, t) for t in (a.topics or [])]
-            self.bag = BagWriter(a.output, a.storage)
+            self.bag = BagWriter(a.output, a.storage, a.max_bag_size, a.max_bag_duration)
             try:
                 log.info('Listening for topics...')
                 log.info('Event publisher thread: Starting')

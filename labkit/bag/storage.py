@@ -18,6 +18,7 @@ EXTENSIONS = {'sqlite3': '.db3', 'mcap': '.mcap'}
 SQLITE_SCHEMA_VERSION = 3   # Humble's kDBSchemaVersion_
 COMMIT_EVERY_MESSAGES = 1000
 COMMIT_EVERY_SECONDS = 0.2     # wall time: what a dying kernel may lose at most
+MIN_SPLIT_FILE_SIZE = 86016     # Humble's sqlite3 plugin minimum
 METADATA_EVERY_SECONDS = 0.5   # metadata.yaml follows the committed batches (see read)
 
 _SCHEMA = (
@@ -90,6 +91,9 @@ class _SqliteFile:
             self.conn.execute('COMMIT')
         self._last_commit = time.monotonic()
 
+    def size(self):
+        return os.path.getsize(self.path)
+
     def settle(self):
         """Everything committed and no -journal file left behind (the writer may go idle)."""
         self.commit()
@@ -133,13 +137,44 @@ class _McapFile:
         os.replace(self.writer.path / made, self.writer.path / self.path)
 
 
-class BagWriter:
-    """rosbag2_cpp's SequentialWriter without cache: one file, metadata at close()."""
+class _FileStats:
+    """One storage file's FileInformation, kept as messages arrive."""
 
-    def __init__(self, uri, storage_id=''):
+    def __init__(self, path):
+        self.path = path
+        self.start = None
+        self.end = None
+        self.count = 0
+
+    def add(self, timestamp):
+        self.count += 1
+        if self.start is None or timestamp < self.start:
+            self.start = timestamp
+        if self.end is None or timestamp > self.end:
+            self.end = timestamp
+
+    def information(self):
+        if not self.count:
+            return FileInformation(self.path, 0, 0, 0)
+        return FileInformation(self.path, self.start, self.end - self.start, self.count)
+
+
+class BagWriter:
+    """rosbag2_cpp's SequentialWriter (no cache): write-through files, metadata at close().
+
+    max_bagfile_size (bytes) / max_bagfile_duration (s) split a sqlite3 bag into
+    `<name>_0.db3`, `<name>_1.db3`, ... like Humble.
+    """
+
+    def __init__(self, uri, storage_id='', max_bagfile_size=0, max_bagfile_duration=0):
         storage_id = storage_id or DEFAULT_STORAGE_ID
         if storage_id not in STORAGE_IDS:
             raise BagError("No storage could be initialized. Abort")
+        if (max_bagfile_size or max_bagfile_duration) and storage_id != 'sqlite3':
+            raise BagError('labkit: bag splitting works with the sqlite3 storage only')
+        if max_bagfile_size and max_bagfile_size < MIN_SPLIT_FILE_SIZE:
+            raise BagError('Invalid bag splitting size given. Please provide a value greater '
+                           f'than {MIN_SPLIT_FILE_SIZE}. Specified value of {max_bagfile_size}')
         uri = os.fspath(uri).rstrip('/') or '.'
         if os.path.isdir(uri):
             raise BagError(f"Database directory already exists ({uri}), "
@@ -150,20 +185,29 @@ class BagWriter:
             raise BagError(f'Failed to create database directory ({uri}).') from None
         self.uri = uri
         self.storage_id = storage_id
-        base = os.path.basename(os.path.abspath(uri))
-        self.relative_path = f'{base}_0{EXTENSIONS[storage_id]}'
-        if storage_id == 'sqlite3':
-            self.file = _SqliteFile(os.path.join(uri, self.relative_path))
-        else:
-            self.file = _McapFile(uri)
-        storage_log(f"Opened database '{os.path.join(uri, self.relative_path)}' "
-                    'for READ_WRITE.')
-        self.topics = {}   # name -> [topic id, TopicInformation]
-        self.start = None
-        self.end = None
-        self.count = 0
+        self.max_size = max_bagfile_size
+        self.max_duration_ns = max_bagfile_duration * 1_000_000_000
+        self.base = os.path.basename(os.path.abspath(uri))
+        self.files = []    # _FileStats, one per storage file
+        self.topics = {}   # name -> [topic id in the current file, TopicInformation]
         self.closed = False
         self._metadata_written = 0.0
+        self._open_file()
+
+    def _open_file(self):
+        relative = f'{self.base}_{len(self.files)}{EXTENSIONS[self.storage_id]}'
+        if self.storage_id == 'sqlite3':
+            self.file = _SqliteFile(os.path.join(self.uri, relative))
+        else:
+            self.file = _McapFile(self.uri)
+        self.files.append(_FileStats(relative))
+        storage_log(f"Opened database '{os.path.join(self.uri, relative)}' for READ_WRITE.")
+        for entry in self.topics.values():  # every file describes every topic
+            entry[0] = self.file.create_topic(entry[1].topic_metadata)
+
+    @property
+    def relative_path(self):
+        return self.files[-1].path
 
     def create_topic(self, topic):
         if topic.name in self.topics:
@@ -175,6 +219,18 @@ class BagWriter:
     def remove_topic(self, topic):
         self.topics.pop(topic.name, None)
 
+    def _should_split(self, timestamp):
+        current = self.files[-1]
+        if self.max_size and self.file.size() >= self.max_size:
+            return True
+        return bool(self.max_duration_ns and current.count and
+                    timestamp - current.start > self.max_duration_ns)
+
+    def split(self):
+        self.file.close()
+        self._open_file()
+        self._refresh_metadata()
+
     def write(self, topic_name, data, timestamp):
         if self.closed:
             raise BagError('Bag is not open. Call open() before writing.')
@@ -183,13 +239,12 @@ class BagWriter:
             raise BagError(f"Failed to write on topic '{topic_name}'. "
                            'Call create_topic() before first write.')
         timestamp = int(timestamp)
+        if (self.max_size or self.max_duration_ns) and self._should_split(timestamp):
+            self.split()
+            entry = self.topics[topic_name]
         committed = self.file.write(entry[0], timestamp, data)
         entry[1].message_count += 1
-        self.count += 1
-        if self.start is None or timestamp < self.start:
-            self.start = timestamp
-        if self.end is None or timestamp > self.end:
-            self.end = timestamp
+        self.files[-1].add(timestamp)
         if committed and time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
             self._refresh_metadata()
 
@@ -206,13 +261,15 @@ class BagWriter:
             self._metadata_written = time.monotonic()
 
     def metadata(self):
-        start = self.start or 0
-        duration = (self.end - self.start) if self.count else 0
+        files = [f.information() for f in self.files]
+        used = [f for f in files if f.message_count]
+        start = min((f.starting_time for f in used), default=0)
+        end = max((f.starting_time + f.duration for f in used), default=0)
         return BagMetadata(
             storage_identifier=self.storage_id,
-            relative_file_paths=[self.relative_path],
-            files=[FileInformation(self.relative_path, start, duration, self.count)],
-            duration=duration, starting_time=start, message_count=self.count,
+            relative_file_paths=[f.path for f in files], files=files,
+            duration=end - start, starting_time=start,
+            message_count=sum(f.message_count for f in files),
             topics_with_message_count=[e[1] for e in self.topics.values()])
 
     def close(self):
@@ -221,7 +278,7 @@ class BagWriter:
         self.closed = True
         self.file.close()
         if self.storage_id == 'mcap' and self.file.path:
-            self.relative_path = self.file.path
+            self.files[-1].path = self.file.path
         write_metadata(self.uri, self.metadata())
 
 
@@ -339,7 +396,11 @@ class BagReader:
 
 
 def _storage_files(directory):
-    return sorted(p for p in os.listdir(directory) if p.endswith(('.db3', '.mcap')))
+    def index(name):  # `bag_10.db3` comes after `bag_9.db3`
+        stem = os.path.splitext(name)[0]
+        tail = stem.rsplit('_', 1)[-1]
+        return (int(tail) if tail.isdigit() else -1, name)
+    return sorted((p for p in os.listdir(directory) if p.endswith(('.db3', '.mcap'))), key=index)
 
 
 def _stale(directory, m):

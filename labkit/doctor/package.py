@@ -63,5 +63,6 @@ class PackageReport:
         except metadata.PackageNotFoundError:
             return report
         for name, spec in sorted(wanted, key=lambda r: r[0].lower()):
-            report.add_to_report(name, f'required={spec}, local={local_version(name) or ""}')
+            have = local_version(name) or 'not installed'
+            report.add_to_report(name, f'local={have}, required: {spec or "any"}')
         return report

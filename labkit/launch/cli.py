@@ -83,15 +83,11 @@ def main(args, io):
         path = args.package_name
         if args.launch_file_name is not None:
             launch_arguments.append(args.launch_file_name)
-    elif args.launch_file_name is None and os.path.exists(args.package_name):
-        return 'No launch file supplied'
+    elif os.path.exists(args.package_name):
+        return 'No launch file supplied'      # a folder given instead of a file
     else:
-        if args.launch_file_name is None:
-            return "Package '{}' not found: \"package '{}' not found, searching: []\"".format(
-                args.package_name, args.package_name) if not _known(args.package_name) \
-                else 'No launch file supplied'
         try:
-            path = find_launch_file(args.package_name, args.launch_file_name)
+            path = find_launch_file(args.package_name, str(args.launch_file_name))
         except PackageNotFoundError as e:
             return "Package '{}' not found: {}".format(args.package_name, e)
         except (FileNotFoundError, RuntimeError) as e:
@@ -107,15 +103,6 @@ def main(args, io):
         io.print(describe(description))
         return 0
     return launch_file(path, parsed)
-
-
-def _known(package):
-    from labkit.ament import index
-    try:
-        index.get_package_prefix(package)
-        return True
-    except KeyError:
-        return False
 
 
 def launch_file(path, launch_arguments):

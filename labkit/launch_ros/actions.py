@@ -20,7 +20,8 @@ def executable_path(package, executable):
     except LookupError:
         if package not in index.bundled_package_names():
             raise index.PackageNotFoundError(
-                "package '{}' not found, searching: {}".format(package, index.search_paths_shown()))
+                "package '{}' not found, searching: {}".format(
+                    package, index.search_paths_shown()))
         prefix = index.SHOWN_INSTALL_PREFIX
     libexec = os.path.join(prefix, 'lib', package)
     if executables.lookup(package, executable) is None:

@@ -17,11 +17,14 @@ console's turn comes.
 Live time: the console's process thread sleeps in its executor until a message
 arrives (no CPU when idle); the widget is redrawn at most every 0.2 s.
 Virtual time: messages arrive during waits (`labkit.sleep`, ...); `show()` and
-the widget reflect what had arrived when drawn.
+the widget reflect what had arrived when drawn. Times are shown as rqt_console
+shows them, `hh:mm:ss.nnnnnnnnn (yyyy-MM-dd)`: local time in live mode, UTC in
+virtual mode (the same text on every machine).
 """
 from __future__ import annotations
 
 import html
+import itertools
 import threading
 import time
 import weakref
@@ -121,7 +124,7 @@ def _live_mode():
 
 
 _VIEWS = weakref.WeakSet()
-_view_ids = iter(range(1, 1 << 62))
+_view_ids = itertools.count(1)
 
 
 def views():
@@ -138,12 +141,14 @@ class ConsoleView:
     """rqt_console's message list, filters, pause and clear; a widget and a static table.
 
     node=None starts the console's own process (a node `rqt_gui_py_node_<pid>`
-    spinning in the background, stopped by `stop()` or `labkit.reset()`); given
-    a node, the console subscribes through it and that node's owner spins it.
+    spinning in the background, stopped by `stop()` or `labkit.reset()`); it
+    replaces the console started that way before (a re-run cell does not pile
+    up consoles) unless replace=False. Given a node, the console subscribes
+    through it and that node's owner spins it.
     """
 
     def __init__(self, node=None, *, limit: int = 20000, rows: int = SHOWN_ROWS,
-                 location: bool = False, utc: bool | None = None):
+                 location: bool = False, utc: bool | None = None, replace: bool = True):
         self.limit = limit                # rqt_console's message limit (oldest dropped)
         self.rows = rows
         self.location = location          # show file:function:line (on demand)
@@ -165,6 +170,10 @@ class ConsoleView:
         if node is not None:
             self.attach(node)
         else:
+            if replace:
+                for older in views():
+                    if older._process is not None:
+                        older.stop()
             self._start_process()
         _VIEWS.add(self)
 
@@ -305,8 +314,11 @@ class ConsoleView:
         return "\n".join(f"[{e.severity_label}] [{e.stamp_string(self.utc)}] [{e.node}]: "
                          f"{e.message}" for e in self.visible())
 
-    def table_html(self) -> str:
-        """The table: # | Message | Severity | Node | Time [| Location], newest rows."""
+    def table_html(self, titles: bool = True) -> str:
+        """The table: # | Message | Severity | Node | Time [| Location], newest rows.
+
+        titles=True gives each row its location as a hover text; the static face
+        leaves it out (source paths differ from machine to machine)."""
         entries = self.visible()
         shown = entries[-self.rows:] if self.rows else entries
         head = ["#", "Message", "Severity", "Node", "Time"] + (["Location"] if self.location
@@ -322,7 +334,8 @@ class ConsoleView:
             if self.location:
                 values.append(e.location)
             tds = "".join(f"<td style='{cell}'>{html.escape(v)}</td>" for v in values)
-            out.append(f"<tr style='color:{colour}' title='{html.escape(e.location)}'>{tds}</tr>")
+            title = f" title='{html.escape(e.location)}'" if titles else ""
+            out.append(f"<tr style='color:{colour}'{title}>{tds}</tr>")
         out.append("</tbody></table>")
         hidden = len(entries) - len(shown)
         total = len(self.messages)
@@ -336,30 +349,33 @@ class ConsoleView:
                 f"</div>{''.join(out)}</div>")
 
     def _repr_html_(self):
-        return self.table_html()
+        return self.table_html(titles=False)
 
     def __repr__(self):
         return f"<ConsoleView: {len(self.visible())} of {len(self.messages)} messages>"
 
     # ------------------------------------------------------------ the widget
     def widget(self):
-        """ipywidgets: Pause, Clear, Location, severity and node exclusion, the table."""
+        """ipywidgets: Pause, Clear, Location; exclude by severity and node; highlight text;
+        the table."""
         if self._widget is not None:
             return self._widget
         import ipywidgets as w
         pause = w.ToggleButton(value=self.paused, description="Pause", icon="pause",
-                               layout=w.Layout(width="90px"))
-        clear = w.Button(description="Clear", icon="trash", layout=w.Layout(width="90px"))
+                               layout=w.Layout(width="80px"))
+        clear = w.Button(description="Clear", icon="trash", layout=w.Layout(width="80px"))
         location = w.ToggleButton(value=self.location, description="Location",
                                   tooltip="show file:function:line",
-                                  layout=w.Layout(width="100px"))
-        severity = w.ToggleButtons(options=list(SEVERITY_LABELS.values()), value=None,
-                                   tooltips=[f"exclude {s} and below" for s in
-                                             SEVERITY_LABELS.values()],
-                                   style={"button_width": "56px"})
-        severity.value = None
-        nodes = w.SelectMultiple(options=self.nodes(), rows=3, description="Exclude nodes",
+                                  layout=w.Layout(width="90px"))
+        # rqt_console's "Exclude Messages ...with severities": a pressed button excludes it
+        severities = {level: w.ToggleButton(value=False, description=label,
+                                             tooltip=f"exclude {label} messages",
+                                             layout=w.Layout(width="60px"))
+                      for level, label in SEVERITY_LABELS.items()}
+        nodes = w.SelectMultiple(options=self.nodes(), rows=3, description="Exclude nodes:",
                                  style={"description_width": "initial"})
+        text = w.Text(value="", placeholder="text", description="Highlight containing:",
+                      continuous_update=False, style={"description_width": "initial"})
         table = w.HTML(self.table_html())
 
         def on_pause(change):
@@ -372,33 +388,35 @@ class ConsoleView:
 
         pause.observe(on_pause, "value")
         location.observe(on_location, "value")
-        severity.observe(lambda _: self._apply_widget_filters(), "value")
+        for button in severities.values():
+            button.observe(lambda _: self._apply_widget_filters(), "value")
         nodes.observe(lambda _: self._apply_widget_filters(), "value")
+        text.observe(lambda _: self._apply_widget_filters(), "value")
         clear.on_click(lambda _: self.clear())
-        self._parts = {"pause": pause, "location": location, "severity": severity,
-                       "nodes": nodes, "table": table}
-        self._widget_rules = []
-        controls = w.HBox([pause, clear, location,
-                           w.Label("Exclude severities up to:"), severity])
-        self._widget = w.VBox([controls, nodes, table])
+        self._parts = {"pause": pause, "location": location, "severities": severities,
+                       "nodes": nodes, "text": text, "table": table}
+        self._widget_rules = ([], [])        # (exclude rules, highlight rules) it made
+        controls = w.HBox([pause, clear, location, w.Label("Exclude:"),
+                           *severities.values()])
+        self._widget = w.VBox([controls, w.HBox([nodes, text]), table])
         self._widget.add_class("labkit-console")
         return self._widget
 
     def _apply_widget_filters(self):
-        """The widget's exclusions are rules like any other, replaced when it changes."""
+        """The widget's rules are rules like any other, replaced when a control changes."""
         parts = self._parts
-        for rule in self._widget_rules:
-            if rule in self.excludes:
-                self.excludes.remove(rule)
-        self._widget_rules = []
-        floor = parts["severity"].value
-        if floor:
-            upto = severity_level(floor)
-            self._widget_rules.append(MessageFilter(
-                severities=[s for s in SEVERITY_LABELS if s <= upto]))
+        for mine, rules in zip(self._widget_rules, (self.excludes, self.highlights)):
+            for rule in mine:
+                if rule in rules:
+                    rules.remove(rule)
+        excluded = [level for level, b in parts["severities"].items() if b.value]
+        excludes = [MessageFilter(severities=excluded)] if excluded else []
         if parts["nodes"].value:
-            self._widget_rules.append(MessageFilter(nodes=parts["nodes"].value))
-        self.excludes.extend(self._widget_rules)
+            excludes.append(MessageFilter(nodes=parts["nodes"].value))
+        highlights = [MessageFilter(text=parts["text"].value)] if parts["text"].value else []
+        self._widget_rules = (excludes, highlights)
+        self.excludes.extend(excludes)
+        self.highlights.extend(highlights)
         self.refresh()
 
     def _sync_controls(self):
@@ -422,13 +440,23 @@ class ConsoleView:
         from labkit.viz.display import show
         widget = self.widget()
         self.refresh()
-        show(widget, html=self.table_html(), text=repr(self))
+        show(widget, html=self.table_html(titles=False), text=repr(self))
 
     def _ipython_display_(self):
         self.show()
 
 
 # ------------------------------------------------------------ `ros2 run rqt_console rqt_console`
+
+def _in_kernel():
+    """True inside a Jupyter kernel (where a picture can be shown)."""
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
 
 def main(args=None):
     """rqt_console as an executable: its node subscribes to /rosout and the console is
@@ -438,12 +466,13 @@ def main(args=None):
     rclpy.init(args=args)
     node = rclpy.create_node(f"rqt_gui_py_node_{process.current().pid}")
     view = ConsoleView(node=node)
-    try:
-        from IPython import get_ipython
-        shell = get_ipython()
-    except ImportError:
-        shell = None
-    if shell is not None and getattr(shell, "kernel", None) is not None:
+    # take what /rosout's publishers kept for late joiners before the first picture
+    for _ in range(view.limit):
+        before = len(view.messages)
+        rclpy.spin_once(node, timeout_sec=0)
+        if len(view.messages) == before:
+            break
+    if _in_kernel():
         view.show()
     try:
         rclpy.spin(node)

@@ -210,3 +210,32 @@ def test_reindex_rebuilds_metadata(bag_dir):
     assert m.topics_with_message_count[0].topic_metadata.type == 'std_msgs/msg/String'
     assert labkit.ros2('bag reindex crash/crash_0.db3').stderr == \
         '[ERROR] [ros2bag]: Must specify a bag directory\n'
+
+
+def test_split_by_duration_like_humble(bag_dir):
+    writer = rosbag2_py.SequentialWriter()
+    writer.open(rosbag2_py.StorageOptions(uri='split', storage_id='sqlite3',
+                                          max_bagfile_duration=1),
+                rosbag2_py.ConverterOptions('', ''))
+    writer.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
+    for k in range(8):  # 0.0 .. 3.5 s
+        writer.write('/c', ifc.serialize(String(data=str(k))), k * 500_000_000)
+    writer.close()
+    m = read_metadata('split')
+    assert m.relative_file_paths == ['split_0.db3', 'split_1.db3', 'split_2.db3']
+    assert [f.message_count for f in m.files] == [3, 3, 2]
+    assert [f.starting_time for f in m.files] == [0, 1_500_000_000, 3_000_000_000]
+    assert (m.message_count, m.duration) == (8, 3_500_000_000)
+    with Reader('split') as reader:
+        assert [ifc.deserialize(d, String).data for _, _, d in reader.messages()] == \
+            [str(k) for k in range(8)]
+    text = repr(rosbag2_py.Info().read_metadata('split'))
+    assert 'Files:             split_0.db3\n                   split_1.db3\n' in text
+
+
+def test_split_size_below_sqlite_minimum_is_refused(bag_dir):
+    import labkit
+    r = labkit.ros2('bag record -b 1000 -o small /chatter')
+    assert r.returncode == 1
+    assert 'Invalid bag splitting size given. Please provide a value greater than 86016. ' \
+        'Specified value of 1000' in r.stderr

@@ -83,7 +83,7 @@ def test_report_sections_order_and_alignment():
                           "subscriber count    : 1"]
     assert "topic               : /rosout" not in out
     assert re.search(r"^labkit +: local=\d", out, re.M)
-    assert re.search(r"^numpy +: required=>=1\.26, local=\d", out, re.M)
+    assert re.search(r"^numpy +: local=\d[^,]*, required: >=1\.26$", out, re.M)
 
 
 def test_empty_topic_list_report():
@@ -121,3 +121,18 @@ def test_doctor_listed_in_ros2_help():
     assert re.search(r"^  doctor +Check ROS setup and other potential issues$", help_text, re.M)
     assert re.search(r"^  wtf +Use `wtf` as alias to `doctor`$", help_text, re.M)
     assert "  --include-warnings, -iw" in labkit.ros2("doctor -h").stdout
+
+
+def test_package_check_compares_installed_versions_with_requirements(monkeypatch):
+    from labkit.doctor import package
+    real = package.local_version
+    monkeypatch.setattr(package, "local_version",
+                        lambda name: "1.0" if name == "numpy" else
+                        None if name == "xacro" else real(name))
+    result = labkit.ros2("doctor")
+    assert "UserWarning: numpy does not meet labkit's requirement. local: 1.0, " \
+        "required: >=1.26" in result.stderr
+    assert "UserWarning: ERROR: xacro is not installed (labkit needs xacro>=2)." in result.stderr
+    assert "Failed modules: package" in result.stdout
+    report = labkit.ros2("doctor -r").stdout
+    assert re.search(r"^xacro +: local=not installed, required: >=2$", report, re.M)

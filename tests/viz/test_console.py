@@ -149,11 +149,17 @@ def test_widget_controls_filter_the_table(loud_executable):
     labkit.sleep(0.6)
     widget = view.widget()
     parts = view._parts
-    parts["severity"].value = "Warn"         # exclude Warn and below
+    parts["severities"][20].value = True     # exclude Info and Warn
+    parts["severities"][30].value = True
     assert [e.severity_label for e in view.visible()] == ["Error"]
     assert "warn line" not in parts["table"].value and "error line" in parts["table"].value
-    parts["severity"].value = None
+    parts["severities"][20].value = False
+    parts["severities"][30].value = False
     assert len(view.visible()) == 3
+    parts["text"].value = "warn"
+    assert view.highlighted(view.visible()[1]) and not view.highlighted(view.visible()[0])
+    parts["text"].value = ""
+    assert view.highlights == []
     parts["nodes"].value = ("loud",)
     assert view.visible() == []
     parts["pause"].value = True
@@ -196,3 +202,38 @@ def test_widget_follows_new_messages_and_show_emits_both_faces(loud_executable, 
     assert "warn line" in data["text/html"] and "<table" in data["text/html"]
     assert data["application/vnd.jupyter.widget-view+json"]["model_id"] == view.widget().model_id
     assert data["text/plain"] == "<ConsoleView: 3 of 3 messages>"
+    assert " title=" not in data["text/html"]      # no machine paths in the stored picture
+    assert " title='" in table.value
+
+
+def test_rqt_console_executable_takes_history_before_its_first_picture(monkeypatch):
+    labkit.ros2("run turtlesim turtlesim_node")
+    shown = []
+    monkeypatch.setattr(ConsoleView, "show", lambda self: shown.append(self.text()))
+    monkeypatch.setattr(console_mod, "_in_kernel", lambda: True)
+    labkit.ros2("run rqt_console rqt_console")
+    assert len(shown) == 1
+    assert "[Info] [00:00:00.000000000 (2024-01-01)] [turtlesim]: Starting turtlesim" in shown[0]
+
+
+def test_a_new_console_replaces_the_previous_one_unless_asked():
+    first = ConsoleView()
+    second = ConsoleView()
+    assert not first.receiving and console_mod.views() == [second]
+    third = ConsoleView(replace=False)
+    assert console_mod.views() == [second, third]
+    nodes = [n for n in labkit.ros2("node list").stdout.split() if "rqt_gui_py_node" in n]
+    assert len(nodes) == 2
+
+
+def test_turtlesim_at_warn_level_shows_only_wall_warnings():
+    """The rqt_console tutorial: turtlesim at WARN, driven into the wall."""
+    view = ConsoleView()
+    labkit.ros2("run turtlesim turtlesim_node --ros-args --log-level WARN")
+    labkit.ros2("topic pub -r 1 /turtle1/cmd_vel geometry_msgs/msg/Twist "
+                "'{linear: {x: 2.0, y: 0.0, z: 0.0}, angular: {x: 0.0, y: 0.0, z: 0.0}}'")
+    labkit.sleep(4.0)
+    entries = [e for e in view.visible() if e.node == "turtlesim"]
+    assert entries, "turtlesim should have hit the wall"
+    assert {e.severity_label for e in entries} == {"Warn"}
+    assert entries[0].message.startswith("Oh no! I hit the wall! (Clamping from [x=11.")

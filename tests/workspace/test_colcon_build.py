@@ -188,7 +188,8 @@ def test_overriding_a_bundled_package(ws):
     facer_ws.python_package(str(ws / 'src'), 'turtlesim', [])
     r = build('build')
     assert "\t'turtlesim' is in: /opt/ros/humble\n" in r.stderr
-    assert r.stdout.endswith('Finished <<< turtlesim [0.78s]\n\nSummary: 1 package finished [1.03s]\n')
+    assert r.stdout.endswith(
+        'Finished <<< turtlesim [0.78s]\n\nSummary: 1 package finished [1.03s]\n')
 
 
 def test_magics_are_registered_and_print_like_a_terminal(facer, capsys):

@@ -161,3 +161,25 @@ def test_continue_on_error_builds_the_rest(facer):
     started = [line.split()[-1] for line in r.stdout.splitlines() if line.startswith('Start')]
     assert started == ['facer_input', 'facer_interfaces']   # the rest needs the interfaces
     assert '  2 packages not processed' in r.stdout
+
+
+def test_cmake_args_pass_through_and_test_verb_says_not_yet(facer):
+    r = build('build --cmake-args -DBUILD_TESTING=0 --packages-select facer_interfaces')
+    assert r.returncode == 0, r.text()
+    r = colcon.run_command('test')
+    assert r.returncode == 1 and 'not available yet' in r.stderr
+    r = colcon.run_command('')
+    assert r.returncode == 1 and r.stderr == 'Error: No verb provided\n'
+    assert r.stdout.startswith('usage: colcon')
+
+
+def test_invalid_manifest_is_skipped_with_colcons_warning(facer):
+    path = facer / 'src/facer_detect/package.xml'
+    path.write_text(path.read_text() + '<depend>stray</depend>\n')
+    r = build('build --packages-up-to facer_detect')
+    assert ("WARNING:colcon.colcon_core.package_identification:Failed to parse ROS package "
+            "manifest in 'src/facer_detect': Error(s) in package "
+            "'src/facer_detect/package.xml':\nThe manifest contains invalid XML:\n"
+            "junk after document element: line ") in r.stderr
+    assert "ignoring unknown package 'facer_detect' in --packages-up-to" in r.stderr
+    assert 'Summary: 0 packages finished' in r.stdout

@@ -14,7 +14,9 @@ class SequentialWriter:
         with self._lock:
             if self._bag is not None:
                 self._bag.close()
-            self._bag = BagWriter(storage_options.uri, storage_options.storage_id)
+            self._bag = BagWriter(storage_options.uri, storage_options.storage_id,
+                                  storage_options.max_bagfile_size,
+                                  storage_options.max_bagfile_duration)
         self._flush_on_shutdown()
 
     def _flush_on_shutdown(self):

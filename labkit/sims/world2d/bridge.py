@@ -7,7 +7,6 @@ ordinary publisher/subscription, so `--ros-args -r /lidar2:=/laser_scan`
 renames it; the Gazebo side keeps the name given.
 """
 import array
-import math
 import sys
 from dataclasses import dataclass
 
@@ -16,6 +15,7 @@ import numpy as np
 import labkit.rclpy as rclpy
 from labkit.interfaces import get_type
 from labkit.rclpy.node import Node
+from labkit.rclpy.utilities import remove_ros_args
 
 from . import transport as gz
 
@@ -270,16 +270,14 @@ def main(args=None):
     rclpy.init(args=argv)
     node = None
     try:
-        specs = rclpy.utilities.remove_ros_args(argv)[1:]
+        specs = remove_ros_args(argv)[1:]
         node = RosGzBridge()
-        configs = []
-        for spec in specs:
+        for spec in specs:       # like parameter_bridge.cpp: each bridge starts as it is read
             try:
-                configs.append(parse_spec(spec))
+                config = parse_spec(spec)
             except UsageError:
                 print(USAGE, flush=True)
                 return 255
-        for config in configs:
             node.add_bridge(config)
         rclpy.spin(node)
     except KeyboardInterrupt:

@@ -1,0 +1,135 @@
+"""Top-down pictures of the 2D world: obstacles, vehicles, scan rays and hits.
+
+`draw(world, poses_and_ranges)` gives a Pillow image; `picture()` a PNG of the
+running simulation, `replay()` an animated GIF of its recent scans.
+"""
+import io
+import math
+
+import numpy as np
+
+BACKGROUND = (204, 204, 204)      # the ground plane's 0.8 grey
+GRID = (185, 185, 185)
+RAY = (255, 170, 0)
+HIT = (220, 0, 0)
+
+
+class _View:
+    def __init__(self, world, pixels):
+        self.w, self.h = float(world.ground[0]), float(world.ground[1])
+        self.scale = pixels / max(self.w, self.h)
+        self.size = (int(round(self.w * self.scale)), int(round(self.h * self.scale)))
+
+    def px(self, x, y):
+        """World metres (x right, y up) -> image pixels (y down)."""
+        return ((x + self.w / 2) * self.scale, (self.h / 2 - y) * self.scale)
+
+
+def draw(world, vehicles, pixels=480, rays=True):
+    """vehicles: [(VehicleConfig, pose, ranges or None)]. Returns a PIL image."""
+    from PIL import Image, ImageDraw
+    view = _View(world, pixels)
+    image = Image.new("RGB", view.size, BACKGROUND)
+    pen = ImageDraw.Draw(image)
+    for metre in range(-int(view.w // 2), int(view.w // 2) + 1):
+        pen.line([view.px(metre, -view.h / 2), view.px(metre, view.h / 2)], fill=GRID)
+    for metre in range(-int(view.h // 2), int(view.h // 2) + 1):
+        pen.line([view.px(-view.w / 2, metre), view.px(view.w / 2, metre)], fill=GRID)
+    for ob in world.obstacles:
+        color = tuple(ob.color)
+        if ob.type == "cylinder":
+            (x0, y0), (x1, y1) = view.px(ob.x - ob.radius, ob.y + ob.radius), \
+                view.px(ob.x + ob.radius, ob.y - ob.radius)
+            pen.ellipse([x0, y0, x1, y1], fill=color, outline=(60, 60, 60))
+        else:
+            pen.polygon([view.px(*c) for c in ob.corners()], fill=color, outline=(60, 60, 60))
+    for config, pose, ranges in vehicles:
+        _draw_vehicle(pen, view, config, pose, ranges if rays else None)
+    return image
+
+
+def _draw_vehicle(pen, view, config, pose, ranges):
+    x, y, yaw = pose
+    c, s = math.cos(yaw), math.sin(yaw)
+
+    def world(px_, py_):
+        return (x + c * px_ - s * py_, y + s * px_ + c * py_)
+    lidar = config.lidar
+    origin = world(*lidar.offset)
+    if ranges is not None:
+        angles = yaw + lidar.angles()[: len(ranges)]
+        finite = np.isfinite(ranges)
+        reach = np.where(finite, ranges, lidar.range_max)
+        step = max(1, len(ranges) // 90)         # draw every n-th ray: a fan, not a blot
+        o = view.px(*origin)
+        for i in range(0, len(ranges), step):
+            end = (origin[0] + reach[i] * math.cos(angles[i]),
+                   origin[1] + reach[i] * math.sin(angles[i]))
+            pen.line([o, view.px(*end)], fill=RAY)
+        hx = origin[0] + ranges[finite] * np.cos(angles[finite])
+        hy = origin[1] + ranges[finite] * np.sin(angles[finite])
+        for px_, py_ in zip(hx, hy):
+            u, v = view.px(px_, py_)
+            pen.ellipse([u - 1.5, v - 1.5, u + 1.5, v + 1.5], fill=HIT)
+    (lx, ly), (ox, oy) = config.chassis_size, config.chassis_offset
+    body = [world(ox + a * lx / 2, oy + b * ly / 2) for a, b in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
+    pen.polygon([view.px(*p) for p in body], fill=tuple(config.color), outline=(0, 0, 160))
+    nose = [world(ox + lx / 2, 0.0), world(ox + lx / 2 - 0.5, 0.3), world(ox + lx / 2 - 0.5, -0.3)]
+    pen.polygon([view.px(*p) for p in nose], fill=(0, 0, 160))
+
+
+def _sim(sim):
+    if sim is None:
+        from .sim import current
+        sim = current()
+    return sim
+
+
+def image(sim=None, pixels=480, rays=True):
+    """A PIL image of a Simulation now."""
+    sim = _sim(sim)
+    return draw(sim.world, [(v.config, v.pose, v.ranges) for v in sim.vehicles], pixels, rays)
+
+
+def png_bytes(sim=None, pixels=480, rays=True):
+    buffer = io.BytesIO()
+    image(sim, pixels, rays).save(buffer, format="PNG", optimize=True)
+    return buffer.getvalue()
+
+
+def picture(sim=None, pixels=480, rays=True, path=None):
+    """An IPython PNG of the world now (also saved to `path` if given)."""
+    data = png_bytes(sim, pixels, rays)
+    if path:
+        with open(path, "wb") as handle:
+            handle.write(data)
+    from IPython.display import Image
+    return Image(data=data, format="png")
+
+
+def gif_bytes(sim=None, pixels=320, seconds=10.0, fps=10):
+    """Animated GIF of the last `seconds` of recorded scans."""
+    sim = _sim(sim)
+    history = list(sim.history)
+    if not history:
+        frames = [image(sim, pixels)]
+    else:
+        t_end = history[-1][0]
+        history = [h for h in history if h[0] >= t_end - seconds]
+        frames = [draw(sim.world, [(v.config, pose, ranges) for v, (pose, ranges)
+                                   in zip(sim.vehicles, states)], pixels)
+                  for _, states in history]
+    frames = [f.convert("P", palette=1, colors=64) for f in frames]   # ADAPTIVE palette
+    buffer = io.BytesIO()
+    frames[0].save(buffer, format="GIF", save_all=True, append_images=frames[1:],
+                   duration=int(1000 / fps), loop=0, optimize=True)
+    return buffer.getvalue()
+
+
+def replay(sim=None, pixels=320, seconds=10.0, fps=10, path=None):
+    data = gif_bytes(sim, pixels, seconds, fps)
+    if path:
+        with open(path, "wb") as handle:
+            handle.write(data)
+    from IPython.display import Image
+    return Image(data=data, format="gif")

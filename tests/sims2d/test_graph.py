@@ -1,0 +1,107 @@
+"""The chapter's commands end to end in virtual time: ign gazebo, parameter_bridge
+with a remap, cmd_vel through the bridge, teleop_twist_keyboard, pictures."""
+import pytest
+
+import labkit
+from labkit.sims import world2d
+from labkit.sims.world2d import sim as sim_module, transport
+
+
+@pytest.fixture
+def gazebo():
+    world2d.register()
+    job = world2d.ign("gazebo -v 4 -r visualize_lidar.sdf")
+    assert job.running
+    yield sim_module.current()
+    labkit.reset()
+    assert sim_module.running() == [] and transport.TRANSPORT.topics() == []
+
+
+def ros_topics():
+    return labkit.ros2("topic list").stdout.split()
+
+
+def test_gazebo_topics_are_not_ros_topics(gazebo, capsys):
+    world2d.ign("topic -l")
+    out = capsys.readouterr().out.split()
+    for name in ("/clock", "/lidar2", "/model/vehicle_blue/odometry",
+                 "/model/vehicle_blue/tf", "/world/visualize_lidar_world/stats"):
+        assert name in out
+    assert ros_topics() == ["/parameter_events", "/rosout"]
+
+
+def test_bridge_remaps_lidar2_to_laser_scan(gazebo, capsys):
+    spec = "/lidar2@sensor_msgs/msg/LaserScan[ignition.msgs.LaserScan"
+    labkit.ros2(f"run ros_gz_bridge parameter_bridge {spec} --ros-args -r /lidar2:=/laser_scan")
+    out = capsys.readouterr().err
+    assert ("[ros_gz_bridge]: Creating GZ->ROS Bridge: [/lidar2 (ignition.msgs.LaserScan) -> "
+            "/lidar2 (sensor_msgs/msg/LaserScan)] (Lazy 0)") in out
+    assert "/laser_scan" in ros_topics() and "/lidar2" not in ros_topics()
+    got = []
+    import labkit.rclpy as rclpy
+    from labkit.interfaces import get_type
+    rclpy.init()
+    node = rclpy.create_node("scan_listener")
+    node.create_subscription(get_type("sensor_msgs/msg/LaserScan"), "/laser_scan", got.append, 10)
+    for _ in range(5):
+        rclpy.spin_once(node, timeout_sec=1.0)
+    assert got
+    scan = got[-1]
+    assert len(scan.ranges) == 640
+    assert scan.header.frame_id == "vehicle_blue/lidar_link/gpu_lidar"
+    assert scan.header.stamp.sec < 5                       # sim time, from 0
+    # straight ahead of vehicle_blue (at x=-4) the red box's face is not on the axis;
+    # the east wall (inner face x=7.4) is out of range 10 m: the middle rays are inf
+    assert scan.ranges[320] == float("inf")
+    node.destroy_node()
+
+
+def test_cmd_vel_through_the_bridge_moves_the_robot(gazebo):
+    labkit.ros2("run ros_gz_bridge parameter_bridge "
+                "/model/vehicle_blue/cmd_vel@geometry_msgs/msg/Twist]ignition.msgs.Twist")
+    x0, t0 = gazebo.vehicle().pose[0], gazebo.sim_time
+    r = labkit.ros2("topic pub --once /model/vehicle_blue/cmd_vel geometry_msgs/Twist "
+                    "'{linear: {x: 1.0}}'")
+    assert r.returncode == 0
+    labkit.sleep(1.0)
+    moved = gazebo.vehicle().pose[0] - x0
+    assert 1.0 <= moved <= gazebo.sim_time - t0 + 1e-9     # 1 m/s since the command came
+
+
+def test_teleop_twist_keyboard_keys(gazebo, capsys):
+    labkit.ros2("run ros_gz_bridge parameter_bridge "
+                "/model/vehicle_blue/cmd_vel@geometry_msgs/msg/Twist]ignition.msgs.Twist")
+    labkit.ros2("run teleop_twist_keyboard teleop_twist_keyboard "
+                "--ros-args -r /cmd_vel:=/model/vehicle_blue/cmd_vel")
+    out = capsys.readouterr().out
+    assert "as Twist messages. It works best with a US keyboard layout." in out
+    assert "currently:\tspeed 0.5\tturn 1.0 " in out
+    vehicle = gazebo.vehicle()
+    world2d.press("j")                       # turn left at 1.0 rad/s
+    labkit.sleep(1.0)
+    assert vehicle.cmd_angular == 1.0 and vehicle.cmd_linear == 0.0
+    world2d.press("q")                       # speeds up by 10 %, keeps the direction
+    assert "currently:\tspeed 0.55\tturn 1.1 " in capsys.readouterr().out
+    labkit.sleep(0.1)
+    assert vehicle.cmd_angular == pytest.approx(1.1)
+    world2d.press("k")                       # anything else: stop
+    labkit.sleep(0.1)
+    assert (vehicle.cmd_linear, vehicle.cmd_angular) == (0.0, 0.0)
+
+
+def test_pictures_and_scan_points(gazebo):
+    labkit.sleep(0.5)
+    from labkit.sims.world2d import render
+    assert render.png_bytes(gazebo).startswith(b"\x89PNG")
+    assert render.gif_bytes(gazebo).startswith(b"GIF89a")
+    points = world2d.scan_points()
+    assert points.shape[1] == 3 and len(points) > 100
+
+
+def test_bridge_usage_and_unknown_pair(gazebo, capsys):
+    r = labkit.ros2("run ros_gz_bridge parameter_bridge")
+    assert r.returncode == 255
+    assert "    [  == a bridge from Gazebo to ROS," in r.stdout
+    labkit.ros2("run ros_gz_bridge parameter_bridge /x@std_msgs/msg/String[ignition.msgs.Twist")
+    assert ("Failed to create a bridge for topic [/x] with ROS2 type [std_msgs/msg/String] to "
+            "topic [/x] with Gazebo Transport type [ignition.msgs.Twist]") in capsys.readouterr().err
