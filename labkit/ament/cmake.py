@@ -96,6 +96,23 @@ def expand(value, variables):
     return re.sub(r'\$\{([A-Za-z0-9_]+)\}', lambda m: variables.get(m.group(1), ''), value)
 
 
+ROSIDL_GENERATE_INTERFACES = '/opt/ros/humble/share/rosidl_cmake/cmake/rosidl_generate_interfaces.cmake'
+
+
+def wrap_message(text, width=75):
+    """A message(FATAL_ERROR) text as CMake prints it: two-space indent, words
+    wrapped when the column plus the next word would pass `width`."""
+    lines, line = [], ''
+    for word in text.split():
+        if line and len(line) + len(word) > width:
+            lines.append(line)
+            line = word
+        else:
+            line = f'{line} {word}' if line else word
+    lines.append(line)
+    return '\n'.join('  ' + line for line in lines)
+
+
 def error(cmd, body):
     return CMakeError(f'CMake Error at CMakeLists.txt:{cmd.line} ({cmd.name}):\n{body}\n')
 
@@ -236,9 +253,13 @@ def _rosidl(cmd, args, result, member_of_groups):
                          "'<member_of_group>rosidl_interface_packages</member_of_group>' "
                          "in their package.xml")
     for dep in deps:
-        if dep not in result.found:
-            raise error(cmd, f"  rosidl_generate_interfaces() the passed dependency '{dep}' "
-                             "has not been found before using find_package()")
+        if dep not in result.found:   # rosidl_cmake's own FATAL_ERROR, as Humble prints it
+            raise CMakeError(
+                f'CMake Error at {ROSIDL_GENERATE_INTERFACES}:162 (message):\n'
+                + wrap_message(f"rosidl_generate_interfaces() the passed dependency '{dep}' "
+                               "has not been found before using find_package()")
+                + f'\nCall Stack (most recent call first):\n'
+                  f'  CMakeLists.txt:{cmd.line} (rosidl_generate_interfaces)\n')
     result.interfaces.extend(files)
     result.interface_deps.extend(deps)
     result.interface_line = cmd.line

@@ -11,7 +11,7 @@ from labkit.sims.world2d import sim as sim_module, transport
 def gazebo():
     world2d.register()
     job = world2d.ign("gazebo -v 4 -r visualize_lidar.sdf")
-    assert job.running
+    assert job.running()
     yield sim_module.current()
     labkit.reset()
     assert sim_module.running() == [] and transport.TRANSPORT.topics() == []
@@ -105,3 +105,45 @@ def test_bridge_usage_and_unknown_pair(gazebo, capsys):
     labkit.ros2("run ros_gz_bridge parameter_bridge /x@std_msgs/msg/String[ignition.msgs.Twist")
     assert ("Failed to create a bridge for topic [/x] with ROS2 type [std_msgs/msg/String] to "
             "topic [/x] with Gazebo Transport type [ignition.msgs.Twist]") in capsys.readouterr().err
+
+
+def take(topic, type_name, spins=20):
+    """Messages a fresh subscription gets on `topic` while the graph runs a little."""
+    import labkit.rclpy as rclpy
+    from labkit.interfaces import get_type
+    if not rclpy.ok():
+        rclpy.init()
+    node = rclpy.create_node("probe")
+    got = []
+    node.create_subscription(get_type(type_name), topic, got.append, 10)
+    for _ in range(spins):
+        rclpy.spin_once(node, timeout_sec=0.1)
+    node.destroy_node()
+    return got
+
+
+def test_tf_and_clock_bridges(gazebo):
+    labkit.ros2("run ros_gz_bridge parameter_bridge "
+                "/model/vehicle_blue/tf@tf2_msgs/msg/TFMessage[ignition.msgs.Pose_V "
+                "/clock@rosgraph_msgs/msg/Clock[ignition.msgs.Clock")
+    clocks = take("/clock", "rosgraph_msgs/msg/Clock", spins=5)
+    assert clocks and clocks[0].clock.sec == 0 and clocks[0].clock.nanosec > 0
+    tfs = take("/model/vehicle_blue/tf", "tf2_msgs/msg/TFMessage", spins=25)
+    assert tfs                                       # 1 Hz, like the world's DiffDrive
+    (t,) = tfs[-1].transforms
+    assert (t.header.frame_id, t.child_frame_id) == ("vehicle_blue/odom", "vehicle_blue/chassis")
+    assert t.transform.rotation.w == 1.0
+
+
+def test_teleop_ctrl_c_stops_robot_and_ends(gazebo):
+    labkit.ros2("run ros_gz_bridge parameter_bridge "
+                "/model/vehicle_blue/cmd_vel@geometry_msgs/msg/Twist]ignition.msgs.Twist")
+    job = labkit.ros2("run teleop_twist_keyboard teleop_twist_keyboard "
+                      "--ros-args -r /cmd_vel:=/model/vehicle_blue/cmd_vel")
+    world2d.press("i")
+    labkit.sleep(0.2)
+    assert gazebo.vehicle().cmd_linear == 0.5
+    world2d.press("\x03")
+    labkit.sleep(0.2)
+    assert not job.running()
+    assert gazebo.vehicle().cmd_linear == 0.0        # the zero Twist on the way out

@@ -184,3 +184,16 @@ def test_gz_type_prefixes_are_equivalent():
     assert transport.normalize_type("gz.msgs.Twist") == "ignition.msgs.Twist"
     assert bridge.factory("geometry_msgs/msg/Twist", "gz.msgs.Twist") is not None
     assert bridge.factory("geometry_msgs/Twist", "ignition.msgs.Twist") is None
+
+
+def test_meshcat_scan_command():
+    from labkit.sims.world2d import meshcat_scan
+    world = make_world(WALL_AHEAD)
+    lidar = world.vehicles[0].lidar
+    points = w2d.scan_points(w2d.scan_ranges(world, lidar, (0.0, 0.0, 0.0)), lidar)
+    command = meshcat_scan.set_scan_command(points)
+    assert command["type"] == "set_object" and command["path"] == "/meshcat/scan"
+    position = command["object"]["geometries"][0]["data"]["attributes"]["position"]
+    back = np.frombuffer(position["array"].data, dtype=np.float32).reshape(-1, 3)
+    assert np.allclose(back, points)
+    assert command["object"]["object"]["type"] == "Points"

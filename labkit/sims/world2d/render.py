@@ -26,7 +26,7 @@ class _View:
 
 
 def draw(world, vehicles, pixels=480, rays=True):
-    """vehicles: [(VehicleConfig, pose, ranges or None)]. Returns a PIL image."""
+    """vehicles: [(VehicleConfig, pose, ranges or None[, pose of the scan])]. A PIL image."""
     from PIL import Image, ImageDraw
     view = _View(world, pixels)
     image = Image.new("RGB", view.size, BACKGROUND)
@@ -43,34 +43,41 @@ def draw(world, vehicles, pixels=480, rays=True):
             pen.ellipse([x0, y0, x1, y1], fill=color, outline=(60, 60, 60))
         else:
             pen.polygon([view.px(*c) for c in ob.corners()], fill=color, outline=(60, 60, 60))
-    for config, pose, ranges in vehicles:
-        _draw_vehicle(pen, view, config, pose, ranges if rays else None)
+    for config, pose, ranges, *scan_pose in vehicles:
+        if rays and ranges is not None:
+            _draw_scan(pen, view, config, scan_pose[0] if scan_pose else pose, ranges)
+        _draw_vehicle(pen, view, config, pose)
     return image
 
 
-def _draw_vehicle(pen, view, config, pose, ranges):
+def _frame(pose):
     x, y, yaw = pose
     c, s = math.cos(yaw), math.sin(yaw)
+    return lambda px_, py_: (x + c * px_ - s * py_, y + s * px_ + c * py_)
 
-    def world(px_, py_):
-        return (x + c * px_ - s * py_, y + s * px_ + c * py_)
+
+def _draw_scan(pen, view, config, pose, ranges):
     lidar = config.lidar
-    origin = world(*lidar.offset)
-    if ranges is not None:
-        angles = yaw + lidar.angles()[: len(ranges)]
-        finite = np.isfinite(ranges)
-        reach = np.where(finite, ranges, lidar.range_max)
-        step = max(1, len(ranges) // 90)         # draw every n-th ray: a fan, not a blot
-        o = view.px(*origin)
-        for i in range(0, len(ranges), step):
-            end = (origin[0] + reach[i] * math.cos(angles[i]),
-                   origin[1] + reach[i] * math.sin(angles[i]))
-            pen.line([o, view.px(*end)], fill=RAY)
-        hx = origin[0] + ranges[finite] * np.cos(angles[finite])
-        hy = origin[1] + ranges[finite] * np.sin(angles[finite])
-        for px_, py_ in zip(hx, hy):
-            u, v = view.px(px_, py_)
-            pen.ellipse([u - 1.5, v - 1.5, u + 1.5, v + 1.5], fill=HIT)
+    origin = _frame(pose)(*lidar.offset)
+    ranges = np.asarray(ranges, dtype=float)
+    angles = pose[2] + lidar.angles()[: len(ranges)]
+    finite = np.isfinite(ranges)
+    reach = np.where(finite, ranges, lidar.range_max)
+    step = max(1, len(ranges) // 90)         # draw every n-th ray: a fan, not a blot
+    o = view.px(*origin)
+    for i in range(0, len(ranges), step):
+        end = (origin[0] + reach[i] * math.cos(angles[i]),
+               origin[1] + reach[i] * math.sin(angles[i]))
+        pen.line([o, view.px(*end)], fill=RAY)
+    hx = origin[0] + ranges[finite] * np.cos(angles[finite])
+    hy = origin[1] + ranges[finite] * np.sin(angles[finite])
+    for px_, py_ in zip(hx, hy):
+        u, v = view.px(px_, py_)
+        pen.ellipse([u - 1.5, v - 1.5, u + 1.5, v + 1.5], fill=HIT)
+
+
+def _draw_vehicle(pen, view, config, pose):
+    world = _frame(pose)
     (lx, ly), (ox, oy) = config.chassis_size, config.chassis_offset
     body = [world(ox + a * lx / 2, oy + b * ly / 2) for a, b in ((1, 1), (-1, 1), (-1, -1), (1, -1))]
     pen.polygon([view.px(*p) for p in body], fill=tuple(config.color), outline=(0, 0, 160))
@@ -88,7 +95,8 @@ def _sim(sim):
 def image(sim=None, pixels=480, rays=True):
     """A PIL image of a Simulation now."""
     sim = _sim(sim)
-    return draw(sim.world, [(v.config, v.pose, v.ranges) for v in sim.vehicles], pixels, rays)
+    return draw(sim.world, [(v.config, v.pose, v.ranges, v.scan_pose or v.pose)
+                            for v in sim.vehicles], pixels, rays)
 
 
 def png_bytes(sim=None, pixels=480, rays=True):

@@ -41,6 +41,7 @@ class Vehicle:
         self.linear = 0.0             # what it actually did in the last step
         self.angular = 0.0
         self.ranges = None            # the last scan
+        self.scan_pose = None         # where the vehicle was when it took it
         self._lock = threading.Lock()
 
     @property
@@ -198,6 +199,7 @@ class Simulation:
             name, lidar = vehicle.name, vehicle.config.lidar
             if self._due((name, "scan"), _period_ns(lidar.update_rate)):
                 vehicle.ranges = scan_ranges(self.world, lidar, vehicle.pose)
+                vehicle.scan_pose = vehicle.pose
                 scans.append(vehicle)
                 self._pubs[self.lidar_topic(vehicle)](self._laser_scan(vehicle, t))
             if self._due((name, "odom"), _period_ns(vehicle.config.odom_publish_frequency)):
