@@ -301,13 +301,10 @@ def build_ament_cmake(ctx):
     for rel in conf.interfaces:
         full = os.path.join(pkg.path, rel)
         if not os.path.isfile(full):
-            return res.fail(
-                f'CMake Error at /opt/ros/humble/share/rosidl_cmake/cmake/'
-                f'rosidl_generate_interfaces.cmake:92 (message):\n'
-                f"  rosidl_generate_interfaces() the passed file '{rel}' doesn't exist\n"
-                f"  relative to the CMAKE_CURRENT_SOURCE_DIR\n  '{_shown(pkg.path)}'\n"
-                f'Call Stack (most recent call first):\n'
-                f'  CMakeLists.txt:{conf.interface_line} (rosidl_generate_interfaces)')
+            return res.fail(cmake.rosidl_error(
+                93, f"rosidl_generate_interfaces() the passed file '{rel}' doesn't exist "
+                    f"relative to the CMAKE_CURRENT_SOURCE_DIR '{_shown(pkg.path)}'",
+                conf.interface_line).text)
         kind = os.path.basename(os.path.dirname(rel))
         stem, ext = os.path.splitext(os.path.basename(rel))
         with open(full, encoding='utf-8') as f:

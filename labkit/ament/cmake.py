@@ -96,7 +96,17 @@ def expand(value, variables):
     return re.sub(r'\$\{([A-Za-z0-9_]+)\}', lambda m: variables.get(m.group(1), ''), value)
 
 
-ROSIDL_GENERATE_INTERFACES = '/opt/ros/humble/share/rosidl_cmake/cmake/rosidl_generate_interfaces.cmake'
+ROSIDL_GENERATE_INTERFACES = \
+    '/opt/ros/humble/share/rosidl_cmake/cmake/rosidl_generate_interfaces.cmake'
+
+
+def rosidl_error(line_in_rosidl, text, cmd_line):
+    """rosidl_generate_interfaces()'s own FATAL_ERROR, with CMake's call stack."""
+    return CMakeError(
+        f'CMake Error at {ROSIDL_GENERATE_INTERFACES}:{line_in_rosidl} (message):\n'
+        + wrap_message(text)
+        + f'\nCall Stack (most recent call first):\n'
+          f'  CMakeLists.txt:{cmd_line} (rosidl_generate_interfaces)\n')
 
 
 def wrap_message(text, width=75):
@@ -245,13 +255,16 @@ def _rosidl(cmd, args, result, member_of_groups):
         elif mode == 'deps':
             deps.extend(x for x in a.split(';') if x)
     if not files:
-        raise error(cmd, '  rosidl_generate_interfaces() called without any interface files')
+        raise rosidl_error(59, 'rosidl_generate_interfaces() called without any interface '
+                               'files', cmd.line)
     if result.ament_package:
-        raise error(cmd, '  rosidl_generate_interfaces() must be called before ament_package()')
-    if 'rosidl_interface_packages' not in member_of_groups:
-        raise error(cmd, "  Packages installing interfaces must include "
-                         "'<member_of_group>rosidl_interface_packages</member_of_group>' "
-                         "in their package.xml")
+        raise rosidl_error(64, 'rosidl_generate_interfaces() must be called before '
+                               'ament_package()', cmd.line)
+    if 'rosidl_interface_packages' not in member_of_groups and \
+            'SKIP_GROUP_MEMBERSHIP_CHECK' not in args:
+        raise rosidl_error(229, "Packages installing interfaces must include "
+                                "'<member_of_group>rosidl_interface_packages</member_of_group>' "
+                                "in their package.xml", cmd.line)
     for dep in deps:
         if dep not in result.found:   # rosidl_cmake's own FATAL_ERROR, as Humble prints it
             raise CMakeError(

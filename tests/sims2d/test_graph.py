@@ -54,6 +54,11 @@ def test_bridge_remaps_lidar2_to_laser_scan(gazebo, capsys):
     # the east wall (inner face x=7.4) is out of range 10 m: the middle rays are inf
     assert scan.ranges[320] == float("inf")
     node.destroy_node()
+    from labkit.sims.world2d import render
+    image = render.laser_scan_image(scan, pixels=200)
+    assert image.size == (200, 200)
+    # the red box's corner region: hits to the front right are drawn white
+    assert (255, 255, 255) in [c for _, c in image.getcolors(200 * 200)]
 
 
 def test_cmd_vel_through_the_bridge_moves_the_robot(gazebo):
@@ -147,3 +152,36 @@ def test_teleop_ctrl_c_stops_robot_and_ends(gazebo):
     labkit.sleep(0.2)
     assert not job.running()
     assert gazebo.vehicle().cmd_linear == 0.0        # the zero Twist on the way out
+
+
+def test_without_r_the_world_starts_paused():
+    world2d.register()
+    world2d.ign("gazebo visualize_lidar.sdf")
+    sim = sim_module.current()
+    labkit.sleep(0.5)
+    assert sim.paused and sim.sim_time == 0.0
+    sim.play()
+    labkit.sleep(0.5)
+    assert sim.sim_time == pytest.approx(0.5, abs=0.011)
+    labkit.reset()
+
+
+def test_unknown_world_and_magic(capsys):
+    world2d.register()
+    from labkit.cli import magics
+    assert "ign" in magics.MAGICS
+    result = world2d.ign("gazebo -r no_such_world.sdf")
+    assert result.returncode == 255
+    assert "Unable to find or download file[no_such_world.sdf]" in result.stderr
+    assert sim_module.running() == []
+
+
+def test_ign_magic_prints_like_a_terminal(capsys):
+    world2d.register()
+    from labkit.cli import magics
+    assert magics.MAGICS["ign"]("gazebo -r no_such_world.sdf") is None
+    assert "Unable to find or download file[no_such_world.sdf]" in capsys.readouterr().err
+    assert magics.MAGICS["ign"]("gazebo -r visualize_lidar.sdf") is None
+    magics.MAGICS["ign"]("topic -l")
+    assert "/model/vehicle_blue/odometry" in capsys.readouterr().out.split()
+    labkit.reset()

@@ -41,9 +41,13 @@ def test_dependency_not_found_before_find_package(facer):
     edit(facer / 'src/facer_interfaces/CMakeLists.txt', 'find_package(geometry_msgs REQUIRED)',
          '')
     r = build('build --packages-select facer_interfaces')
-    assert 'CMake Error at CMakeLists.txt:8 (rosidl_generate_interfaces):' in r.stderr
-    assert ("rosidl_generate_interfaces() the passed dependency 'geometry_msgs' has not been "
-            "found before using find_package()") in r.stderr
+    assert 'CMake Error at /opt/ros/humble/share/rosidl_cmake/cmake/' \
+        'rosidl_generate_interfaces.cmake:162 (message):\n' in r.stderr
+    assert ' '.join(r.stderr.split()).count(
+        "rosidl_generate_interfaces() the passed dependency 'geometry_msgs' has not been "
+        "found before using find_package()") == 1
+    assert 'Call Stack (most recent call first):\n  CMakeLists.txt:8 ' \
+        '(rosidl_generate_interfaces)\n' in r.stderr
 
 
 def test_unknown_package_in_find_package(facer):
@@ -66,14 +70,16 @@ def test_missing_generators_and_group(facer):
     r = build('build --packages-select facer_interfaces')
     assert ("Packages installing interfaces must include "
             "'<member_of_group>rosidl_interface_packages</member_of_group>' in their "
-            "package.xml") in r.stderr
+            "package.xml") in ' '.join(r.stderr.split())
+    assert 'rosidl_generate_interfaces.cmake:229 (message):' in r.stderr
 
 
 def test_missing_interface_file(facer):
     (facer / 'src/facer_interfaces/srv/FaceResult.srv').unlink()
     r = build('build --packages-select facer_interfaces')
     assert "rosidl_generate_interfaces() the passed file 'srv/FaceResult.srv' doesn't" \
-        in r.stderr
+        in ' '.join(r.stderr.split())
+    assert 'rosidl_generate_interfaces.cmake:93 (message):' in r.stderr
 
 
 def test_without_ament_package_the_index_does_not_know_it(facer):

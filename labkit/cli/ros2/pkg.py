@@ -41,6 +41,11 @@ def package_names():
     ament = _ament()
     if ament is not None and hasattr(ament, 'package_names'):
         names |= set(ament.package_names())
+    try:    # packages with only a share folder (urdf_tutorial): labkit's bundled prefixes
+        from labkit.ament import index
+        names |= index.bundled_package_names()
+    except ImportError:
+        pass
     return sorted(n for n in names if not n.startswith('_'))
 
 

@@ -37,8 +37,8 @@ def _ign_magic(line):
 
 def ign(command):
     """Run an `ign` command line: 'gazebo -v 4 -r visualize_lidar.sdf' or 'topic -l'."""
-    from .gz_cli import ign_magic
-    return ign_magic(command)
+    from .gz_cli import run
+    return run(command)
 
 
 def current():

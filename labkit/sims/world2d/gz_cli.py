@@ -85,6 +85,15 @@ def topic_command(argv, out=None):
 
 def ign_magic(line):
     """%ign gazebo -v 4 -r visualize_lidar.sdf | %ign topic -l"""
+    result = run(line)
+    if result is not None and hasattr(result, "stdout") and not hasattr(result, "process"):
+        from labkit.cli.magics import emit      # a start that failed at once: show its output
+        emit(result)
+
+
+def run(line):
+    """Run an `ign` command line; `gazebo` returns its background job (or, if it failed at
+    once, a finished command with returncode/stdout/stderr)."""
     argv = shlex.split(line)
     if not argv:
         print("usage: ign gazebo|topic ...", file=sys.stderr)

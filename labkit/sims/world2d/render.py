@@ -141,3 +141,41 @@ def replay(sim=None, pixels=320, seconds=10.0, fps=10, path=None):
             handle.write(data)
     from IPython.display import Image
     return Image(data=data, format="gif")
+
+
+def laser_scan_image(msg, pixels=360, reach=None):
+    """A sensor_msgs/LaserScan drawn in its own frame, from above, as RViz's LaserScan
+    display shows it with the fixed frame set to the scan's frame_id (x up the page)."""
+    from PIL import Image, ImageDraw
+    ranges = np.asarray(msg.ranges, dtype=float)
+    angles = msg.angle_min + msg.angle_increment * np.arange(len(ranges))
+    ok = np.isfinite(ranges) & (ranges >= msg.range_min) & (ranges <= msg.range_max)
+    reach = float(reach or msg.range_max or 10.0)
+    scale = pixels / (2.0 * reach)
+    image = Image.new("RGB", (pixels, pixels), (48, 48, 48))     # RViz's dark background
+    pen = ImageDraw.Draw(image)
+    centre = pixels / 2.0
+
+    def px(x, y):              # x forward = up, y left = left
+        return (centre - y * scale, centre - x * scale)
+    for metre in range(-int(reach), int(reach) + 1):
+        pen.line([px(metre, -reach), px(metre, reach)], fill=(90, 90, 90))
+        pen.line([px(-reach, metre), px(reach, metre)], fill=(90, 90, 90))
+    pen.line([px(0, 0), px(1, 0)], fill=(255, 0, 0), width=2)         # the frame's x axis
+    pen.line([px(0, 0), px(0, 1)], fill=(0, 255, 0), width=2)         # and y axis
+    for x, y in zip(ranges[ok] * np.cos(angles[ok]), ranges[ok] * np.sin(angles[ok])):
+        u, v = px(x, y)
+        pen.rectangle([u - 1, v - 1, u + 1, v + 1], fill=(255, 255, 255))
+    pen.text((6, 6), f"Fixed Frame: {msg.header.frame_id}", fill=(220, 220, 220))
+    return image
+
+
+def laser_scan_picture(msg, pixels=360, reach=None, path=None):
+    """IPython PNG of laser_scan_image (also saved to `path` if given)."""
+    buffer = io.BytesIO()
+    laser_scan_image(msg, pixels, reach).save(buffer, format="PNG", optimize=True)
+    if path:
+        with open(path, "wb") as handle:
+            handle.write(buffer.getvalue())
+    from IPython.display import Image
+    return Image(data=buffer.getvalue(), format="png")

@@ -134,7 +134,18 @@ class World:
     def collides(self, points):
         """True if any of the (N, 2) points is inside an obstacle."""
         points = np.asarray(points, dtype=float).reshape(-1, 2)
-        return any(ob.contains(points).any() for ob in self.obstacles)
+        if not len(points):
+            return False
+        centre = points.mean(axis=0)
+        spread = float(np.sqrt(((points - centre) ** 2).sum(axis=1).max()))
+        for ob in self.obstacles:
+            # only obstacles whose bounding circle reaches the points' one can touch them
+            bound = ob.radius if ob.type == "cylinder" else math.hypot(*ob.size) / 2.0
+            if math.hypot(ob.x - centre[0], ob.y - centre[1]) > bound + spread:
+                continue
+            if ob.contains(points).any():
+                return True
+        return False
 
 
 def scan_ranges(world, lidar, pose):

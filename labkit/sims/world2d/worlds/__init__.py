@@ -1,0 +1,1 @@
+"""Worlds shipped with labkit (YAML files)."""
