@@ -11,7 +11,7 @@ Everything else is ordinary ROS 2 code.
 """
 __version__ = "0.1.0"
 
-__all__ = ["ros2", "sleep", "reset", "activate", "time_mode", "set_time_mode",
+__all__ = ["ros2", "colcon", "source", "rosdep", "sleep", "reset", "activate", "time_mode", "set_time_mode",
            "load_ipython_extension",
            "unload_ipython_extension"]
 
@@ -24,6 +24,24 @@ def ros2(command, **kwargs):
     """
     from labkit.cli.ros2 import run_command
     return run_command(command, **kwargs)
+
+
+def colcon(command=""):
+    """Run one `colcon` command line in the current folder (build, list); like ros2()."""
+    from labkit.ament import colcon as _colcon
+    return _colcon.run_command(command)
+
+
+def source(path="install/setup.bash"):
+    """`source install/setup.bash`: make a built workspace's packages visible; returns 0 on success."""
+    from labkit.ament import source as _source
+    return _source.run(path)
+
+
+def rosdep(command=""):
+    """Run one `rosdep` command line (install, resolve, keys, check, ...); like ros2()."""
+    from labkit.ament import rosdep as _rosdep
+    return _rosdep.run_command(command)
 
 
 def sleep(seconds):

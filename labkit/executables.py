@@ -21,16 +21,30 @@ BUILTIN = {
 }
 
 _extra = {}
+_paths = {}      # (package, executable) -> the path `ros2 run` shows as argv[0]
 
 
-def register(package, executable, target):
-    """Add (or replace) an executable, e.g. from a workspace's setup.py entry points."""
+def register(package, executable, target, path=None):
+    """Add (or replace) an executable, e.g. from a workspace's setup.py entry points.
+
+    `path` is the file a real install would run (install/<pkg>/lib/<pkg>/<exe>, as
+    printed); by default /opt/ros/humble/lib/<pkg>/<exe>."""
     _extra[(package, executable)] = target
+    if path is not None:
+        _paths[(package, executable)] = path
+    else:
+        _paths.pop((package, executable), None)
+
+
+def path_of(package, executable):
+    """argv[0] of the executable's process, as a real machine would show it."""
+    return _paths.get((package, executable)) or f"/opt/ros/humble/lib/{package}/{executable}"
 
 
 def unregister_package(package):
     for key in [k for k in _extra if k[0] == package]:
         del _extra[key]
+        _paths.pop(key, None)
 
 
 def lookup(package, executable):

@@ -276,7 +276,7 @@ def _resolve(argv):
     target = executables.lookup(package, executable)
     if target is None:
         raise LookupError("No executable found")
-    exe_path = f"/opt/ros/humble/lib/{package}/{executable}"
+    exe_path = executables.path_of(package, executable)
     return executables.resolve(target), [exe_path] + list(argv[2:])
 
 

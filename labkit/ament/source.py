@@ -188,7 +188,8 @@ def _register_executables(name, prefix, site):
     for egg in _egg_infos(site):
         for exe, target in _entry_points(egg):
             if os.path.isfile(os.path.join(libexec, exe)):
-                executables.register(name, exe, launcher_target(name, exe, target))
+                executables.register(name, exe, launcher_target(name, exe, target),
+                                     path=_shown(os.path.join(libexec, exe)))
                 registered.add(exe)
     # other executables there (install(PROGRAMS ...), data_files): Python scripts run as
     # __main__; anything else (a compiled program) cannot run in labkit
@@ -201,7 +202,13 @@ def _register_executables(name, prefix, site):
         if exe in registered or not os.path.isfile(path) or not os.access(path, os.X_OK):
             continue
         if _is_python_script(path):
-            executables.register(name, exe, launcher_target(name, exe, None, script=path))
+            executables.register(name, exe, launcher_target(name, exe, None, script=path),
+                                 path=_shown(path))
+
+
+def _shown(path):
+    from labkit.ament import index
+    return index.shown(path)
 
 
 def _is_python_script(path):

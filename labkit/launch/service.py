@@ -7,11 +7,27 @@ The console lines are launch's: the log folder and verbosity first, one
 every process has ended (and no timer is pending), or at Ctrl-C (a job's
 stop): `user interrupted with ctrl-c (SIGINT)`, then every process is stopped.
 """
+import atexit
 import datetime
 import os
 import socket
 
 from labkit.launch.launch_context import LaunchContext
+
+
+_PARAMS_FILES = set()      # every temporary params file not yet removed (atexit removes them)
+
+
+def _remove_params_files(paths=None):
+    for path in list(_PARAMS_FILES if paths is None else paths):
+        try:
+            os.unlink(path)
+        except OSError:
+            pass
+        _PARAMS_FILES.discard(path)
+
+
+atexit.register(_remove_params_files)
 
 
 class _Child:
@@ -107,6 +123,7 @@ class LaunchService:
 
     def add_params_file(self, path):
         self._params_files.append(path)
+        _PARAMS_FILES.add(path)     # a launch still running when Python exits leaves none
 
     def start_node(self, *, package, executable, argv, name=None, output='log', cmd=None,
                    exec_name=None):
@@ -189,11 +206,7 @@ class LaunchService:
         self._report_exits()
 
     def _cleanup(self):
-        for path in self._params_files:
-            try:
-                os.unlink(path)
-            except OSError:
-                pass
+        _remove_params_files(self._params_files)
         self._params_files.clear()
 
     def _log_dir(self):

@@ -160,6 +160,8 @@ def test_register_noun_and_a_broken_noun_is_one_line():
 
 
 def test_pkg_xml_without_a_manifest():
-    r = run_command('pkg xml turtlesim')
+    r = run_command('pkg xml turtlesim')        # bundled with a manifest
+    assert r.returncode == 0 and '<name>turtlesim</name>' in r.stdout
+    r = run_command('pkg xml std_msgs')         # bundled interfaces only: no manifest
     assert (r.returncode, r.stderr) == (1, 'Package XML manifest not found\n')
     assert run_command('pkg xml nope').stderr == 'Package not found\n'

@@ -50,15 +50,23 @@ def package_names():
 
 
 def prefix_of(package):
-    ament = _ament()
-    if ament is not None and hasattr(ament, 'package_prefix'):
-        try:
-            found = ament.package_prefix(package)
-        except LookupError:
-            found = None
-        if found:
-            return found
-    return INSTALL_PREFIX if package in package_names() else None
+    """The package's real prefix folder (a workspace's install/<pkg>, or a bundled one)."""
+    try:
+        from labkit.ament import index
+        return index.get_package_prefix(package)
+    except ImportError:
+        return INSTALL_PREFIX if package in package_names() else None
+    except Exception:       # PackageNotFoundError
+        return None
+
+
+def shown(path):
+    """A path as a Humble machine prints it (bundled prefixes are /opt/ros/humble)."""
+    try:
+        from labkit.ament import index
+        return index.shown(path)
+    except ImportError:
+        return path
 
 
 def executable_names(package):
@@ -81,7 +89,7 @@ def executables(args, io):
         if prefix is None:
             return f"Package '{args.package_name}' not found"
         for name in executable_names(package):
-            io.print(os.path.join(prefix, 'lib', package, name) if args.full_path
+            io.print(shown(os.path.join(prefix, 'lib', package, name)) if args.full_path
                      else f'{package} {name}')
 
 
@@ -99,7 +107,7 @@ def prefix(args, io):
     found = prefix_of(args.package_name)
     if found is None:
         return PACKAGE_NOT_FOUND
-    io.print(os.path.join(found, 'share', args.package_name) if args.share else found)
+    io.print(shown(os.path.join(found, 'share', args.package_name) if args.share else found))
 
 
 def _xml_args(p):
