@@ -125,14 +125,20 @@ def tree_lines(path='.'):
     counts = {'dirs': 0, 'files': 0}
 
     def walk(folder, prefix):
-        names = sorted(os.listdir(folder))
+        # like tree without -a: hidden entries are left out; a link shows its target
+        names = sorted(n for n in os.listdir(folder) if not n.startswith('.'))
         for i, name in enumerate(names):
             last = i == len(names) - 1
-            lines.append(prefix + ('└── ' if last else '├── ') + name)
             full = os.path.join(folder, name)
-            if os.path.isdir(full) and not os.path.islink(full):
+            label = name
+            if os.path.islink(full):
+                target = os.readlink(full)
+                label += ' -> ' + (display(target) if os.path.isabs(target) else target)
+            lines.append(prefix + ('└── ' if last else '├── ') + label)
+            if os.path.isdir(full):
                 counts['dirs'] += 1
-                walk(full, prefix + ('    ' if last else '│   '))
+                if not os.path.islink(full):
+                    walk(full, prefix + ('    ' if last else '│   '))
             else:
                 counts['files'] += 1
 
