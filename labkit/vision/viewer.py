@@ -98,9 +98,15 @@ class ImageViewer:
         except Exception:  # a closed widget: stop pushing
             self._widget = None
 
+    def jpeg(self, quality=80):
+        """The newest frame as JPEG bytes: the static face stored in notebooks (a camera
+        frame as PNG is ~0.5 MB, as JPEG ~40 KB)."""
+        frame = cv2.imdecode(np.frombuffer(bytes(self.snapshot()), np.uint8), cv2.IMREAD_COLOR)
+        return cv2.imencode('.jpg', frame, [cv2.IMWRITE_JPEG_QUALITY, quality])[1].tobytes()
+
     def _ipython_display_(self):
         from labkit.viz.display import show
-        show(self.widget, png=bytes(self.snapshot()), text='<image viewer: %s>' % self.topic)
+        show(self.widget, jpeg=self.jpeg(), text='<image viewer: %s>' % self.topic)
 
     def close(self):
         """Stop the subscriber process and the widget."""

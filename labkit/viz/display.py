@@ -9,10 +9,16 @@ import base64
 from IPython.display import display
 
 
-def bundle(widget=None, png=None, svg=None, html=None, text="<labkit picture>"):
+def _b64(data):
+    return base64.b64encode(data).decode("ascii") if isinstance(data, bytes) else data
+
+
+def bundle(widget=None, png=None, svg=None, html=None, jpeg=None, text="<labkit picture>"):
     data = {"text/plain": text}
     if png is not None:
-        data["image/png"] = base64.b64encode(png).decode("ascii") if isinstance(png, bytes) else png
+        data["image/png"] = _b64(png)
+    if jpeg is not None:           # photos (camera frames): a fraction of a PNG's size
+        data["image/jpeg"] = _b64(jpeg)
     if svg is not None:
         data["image/svg+xml"] = svg
     if html is not None:
@@ -23,6 +29,6 @@ def bundle(widget=None, png=None, svg=None, html=None, text="<labkit picture>"):
     return data
 
 
-def show(widget=None, *, png=None, svg=None, html=None, text="<labkit picture>"):
+def show(widget=None, *, png=None, svg=None, html=None, jpeg=None, text="<labkit picture>"):
     """Display a widget together with its static picture in one output."""
-    display(bundle(widget, png=png, svg=svg, html=html, text=text), raw=True)
+    display(bundle(widget, png=png, svg=svg, html=html, jpeg=jpeg, text=text), raw=True)
