@@ -69,10 +69,25 @@ def ros2_magic(line):
     except ValueError as e:
         print(f'ros2: {e}', file=sys.stderr)
         return
-    result = run_command(argv)
+    echoed = []
+
+    def echo(name, text):
+        if name == 'stdout' and target is not None:
+            return                      # goes to the file, like `> file` in a shell
+        stream = sys.stdout if name == 'stdout' else sys.stderr
+        stream.write(text)
+        stream.flush()
+        echoed.append(name)
+
+    result = run_command(argv, echo=echo)
     if isinstance(result, Job):
         return  # its output arrives through the process sink, like a terminal's
-    emit(result, target, mode)
+    if target is not None:
+        with open(target, mode) as f:
+            f.write(result.stdout)
+    # lines the command made without the recorder (early argument errors) still show
+    if not echoed and (result.stdout or result.stderr) and target is None:
+        emit(result)
 
 
 MAGICS['ros2'] = ros2_magic

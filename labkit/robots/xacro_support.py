@@ -53,7 +53,7 @@ def main(args=None):
     try:
         text = process(files[0], mappings)
     except URDFError as exc:        # the xacro command prints xacro's own message
-        sys.stderr.write(f"{getattr(exc, 'detail', exc)}\n")
+        _report(exc.__context__ or exc)
         return 2
     if out:
         with open(out, "w", encoding="utf-8") as handle:
@@ -61,6 +61,21 @@ def main(args=None):
     else:
         sys.stdout.write(text)
     return 0
+
+
+def _report(error):
+    """Print a failure the way the xacro command does (its wording and location lines)."""
+    import xml.parsers.expat
+    import xacro
+    if isinstance(error, xml.parsers.expat.ExpatError):
+        xacro.error("XML parsing error: %s" % error, alt_text=None)
+        xacro.print_location()
+        sys.stderr.write('\nCheck that:\n - Your XML is well-formed\n'
+                         ' - You have the xacro xmlns declaration: '
+                         'xmlns:xacro="http://www.ros.org/wiki/xacro"\n')
+    else:
+        xacro.error(str(error) or repr(error))
+        xacro.print_location()
 
 
 def run(command_line):

@@ -77,14 +77,17 @@ class CompletedCommand:
 class _Recorder(io.StringIO):
     """One output stream of a command, also noting each write in the shared order."""
 
-    def __init__(self, name, chunks):
+    def __init__(self, name, chunks, echo=None):
         super().__init__()
         self.name = name
         self.chunks = chunks
+        self.echo = echo
 
     def write(self, text):
         if text:
             self.chunks.append((self.name, text))
+            if self.echo is not None:
+                self.echo(self.name, text)
         return super().write(text)
 
 
@@ -123,8 +126,12 @@ def build_parser(argv):
     return parser
 
 
-def run_command(command):
-    """Run one ros2 command line; returns a CompletedCommand, or a Job for long-running verbs."""
+def run_command(command, echo=None):
+    """Run one ros2 command line; returns a CompletedCommand, or a Job for long-running verbs.
+
+    `echo(stream_name, text)`, if given, sees every write as it happens (the %ros2
+    magic prints through it, so a command's lines and the lines of the nodes it
+    talks to appear in the order they happened, as in side-by-side terminals)."""
     from labkit import plugins
     plugins.register_all()
     try:
@@ -135,7 +142,7 @@ def run_command(command):
         from labkit.cli.ros2 import jobs
         return jobs.jobs_command(argv)
     chunks = []
-    out, err = _Recorder('stdout', chunks), _Recorder('stderr', chunks)
+    out, err = _Recorder('stdout', chunks, echo), _Recorder('stderr', chunks, echo)
     streams = Streams(out, err)
     _base.set_parse_streams(streams)
     try:
