@@ -290,6 +290,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     if name is None:
         name = argv[1] if argv and len(argv) > 1 else getattr(main, "__name__", "process")
     install_output_proxy()
+    _install_argv_proxy()
     proc = Process(name, argv=args)
     proc.echo = echo
     proc.sink = sink
@@ -338,7 +339,72 @@ def _takes_args(main):
 def argv():
     """What sys.argv is for the calling thread's process (its own argv in a process)."""
     proc = current()
-    return proc.argv if proc is not MAIN else sys.argv
+    if proc is not MAIN:
+        return proc.argv
+    return sys.argv._main if isinstance(sys.argv, _ArgvProxy) else sys.argv
+
+
+class _ArgvProxy(list):
+    """sys.argv as each process sees it: a node run with `ros2 run pkg exe a b` that
+    reads sys.argv (as the seed's static broadcaster does) gets [exe, 'a', 'b'], while
+    the notebook or script itself keeps its own. The list's own storage holds the main
+    argv, so C-level copies (list(sys.argv)) give the main one."""
+
+    def __init__(self, main):
+        super().__init__(main)
+        self._main = main
+
+    def _target(self):
+        proc = current()
+        return self._main if proc is MAIN else proc.argv
+
+    def __getitem__(self, index):
+        return self._target()[index]
+
+    def __len__(self):
+        return len(self._target())
+
+    def __iter__(self):
+        return iter(self._target())
+
+    def __contains__(self, item):
+        return item in self._target()
+
+    def __eq__(self, other):
+        return self._target() == other
+
+    def __ne__(self, other):
+        return self._target() != other
+
+    def __add__(self, other):
+        return list(self._target()) + list(other)
+
+    def __repr__(self):
+        return repr(self._target())
+
+    def index(self, *args):
+        return self._target().index(*args)
+
+    def count(self, item):
+        return self._target().count(item)
+
+    def copy(self):
+        return list(self._target())
+
+    def __setitem__(self, index, value):
+        self._target()[index] = value
+
+    def append(self, item):
+        self._target().append(item)
+
+    def pop(self, *args):
+        return self._target().pop(*args)
+
+
+def _install_argv_proxy():
+    """Wrap the current sys.argv (a script may have replaced it: labkit exec does)."""
+    if not isinstance(sys.argv, _ArgvProxy):
+        sys.argv = _ArgvProxy(sys.argv)
 
 
 def _wait_first_wait_point(proc):
