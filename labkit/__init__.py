@@ -54,6 +54,11 @@ def reset():
     """Stop every process and background job, shut every context down, clear the graph."""
     from labkit import process
     process.reset_all()
+    try:  # live graph views and consoles hold nodes of their own
+        from labkit.viz import graph_view
+        graph_view.stop_all()
+    except ImportError:
+        pass
     try:  # goal ids restart too, so a notebook re-run from here prints the same ids
         from labkit.rclpy.action import _common
         _common.reset_virtual_uuids()

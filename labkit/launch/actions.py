@@ -204,22 +204,103 @@ class SetEnvironmentVariable(Action):
         os.environ[perform(context, self.__name)] = perform(context, self.__value)
 
 
-class ExecuteProcess(Action):
-    """A command; labkit runs `ros2 run <pkg> <exe> ...` commands (other programs: no)."""
+class RegisterEventHandler(Action):
+    """Start reacting to events (e.g. OnProcessStart of a node)."""
 
-    def __init__(self, *, cmd, name=None, output='log', additional_env=None, shell=False,
-                 emulate_tty=False, cwd=None, **kwargs):
+    def __init__(self, event_handler, **kwargs):
         super().__init__(**kwargs)
-        self.cmd = [normalize_to_list_of_substitutions(c) for c in cmd]
-        self.name = name
-        self.output = output
+        self.__event_handler = event_handler
+
+    @property
+    def event_handler(self):
+        return self.__event_handler
 
     def execute(self, context):
-        argv = [perform(context, c) for c in self.cmd]
-        if argv[:2] != ['ros2', 'run'] or len(argv) < 4:
-            raise RuntimeError("labkit can only launch ROS executables (`ros2 run <package> "
-                               "<executable>`), not '{}'".format(' '.join(argv)))
-        context.launch_service.start_node(
-            package=argv[2], executable=argv[3], argv=argv[4:],
-            name=perform(context, self.name) if self.name else None,
-            output=self.output, cmd=argv)
+        context.register_event_handler(self.__event_handler)
+
+
+class UnregisterEventHandler(Action):
+    def __init__(self, event_handler, **kwargs):
+        super().__init__(**kwargs)
+        self.__event_handler = event_handler
+
+    def execute(self, context):
+        context.unregister_event_handler(self.__event_handler)
+
+
+class EmitEvent(Action):
+    def __init__(self, *, event, **kwargs):
+        super().__init__(**kwargs)
+        self.__event = event
+
+    @property
+    def event(self):
+        return self.__event
+
+    def execute(self, context):
+        context.launch_service.emit_event(self.__event)
+
+
+class Shutdown(EmitEvent):
+    """launch.actions.Shutdown: emit launch.events.Shutdown(reason=...)."""
+
+    def __init__(self, *, reason='reason not given', **kwargs):
+        from labkit.launch.events import Shutdown as ShutdownEvent
+        super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
+
+
+class ExecuteProcess(Action):
+    """A command launched as a process.
+
+    labkit has no shell and no other programs: it runs `ros2 ...` command lines (a
+    `ros2 run` starts the executable itself; any other verb runs as one short
+    process whose output is that verb's) and labkit executables named by their path
+    or name. `shell=True` joins the pieces into one command line, as a shell would.
+    """
+
+    def __init__(self, *, cmd, name=None, cwd=None, env=None, additional_env=None,
+                 shell=False, sigterm_timeout=None, sigkill_timeout=None, emulate_tty=False,
+                 prefix=None, output='log', output_format='[{this.process_description.name}] '
+                 '{line}', log_cmd=False, on_exit=None, respawn=False, respawn_delay=0.0,
+                 **kwargs):
+        super().__init__(**kwargs)
+        self.__cmd = [normalize_to_list_of_substitutions(c) for c in cmd]
+        self.__name = name
+        self.__shell = shell
+        self.__output = output
+        self.__additional_env = list((additional_env or {}).items())
+        self.__on_exit = on_exit
+
+    @property
+    def cmd(self):
+        return self.__cmd
+
+    @property
+    def name(self):
+        return self.__name
+
+    @property
+    def shell(self):
+        return self.__shell
+
+    @property
+    def output(self):
+        return self.__output
+
+    def execute(self, context):
+        import shlex
+        cmd = [perform(context, c) for c in self.__cmd]
+        if self.__name is not None:
+            name = perform(context, self.__name)
+        else:
+            name = os.path.basename(cmd[0]) if cmd else ''
+        argv = shlex.split(' '.join(cmd)) if self.__shell else list(cmd)
+        service = context.launch_service
+        if self.__on_exit is not None:
+            from labkit.launch.event_handlers import OnProcessExit
+            context.register_event_handler(OnProcessExit(target_action=self,
+                                                         on_exit=self.__on_exit))
+        service.start_command(self, argv, label_name=name, cmd_text=' '.join(cmd),
+                              output=perform(context, self.__output))
+
+

@@ -9,6 +9,20 @@ class LaunchContext:
         self.locals = {}                # e.g. current_launch_file_directory
         self._stack = []
         self.launch_service = None      # the runner that starts processes
+        self._event_handlers = []       # newest first, as launch keeps them
+
+    def register_event_handler(self, event_handler):
+        self._event_handlers.insert(0, event_handler)
+
+    def unregister_event_handler(self, event_handler):
+        if event_handler in self._event_handlers:
+            self._event_handlers.remove(event_handler)
+
+    def emit_event_sync(self, event):
+        self.launch_service.emit_event(event)
+
+    def emit_event(self, event):
+        self.launch_service.emit_event(event)
 
     def _push_launch_configurations(self):
         self._stack.append((dict(self.launch_configurations), dict(self.locals)))

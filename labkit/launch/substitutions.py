@@ -183,3 +183,54 @@ def _run_labkit_command(argv):
         except SystemExit as e:
             code = e.code if isinstance(e.code, int) else (0 if e.code is None else 1)
     return code or 0, out.getvalue(), err.getvalue()
+
+
+class LocalSubstitution(Substitution):
+    """A value from the context's locals, e.g. `LocalSubstitution('event.reason')` in a handler."""
+
+    def __init__(self, expression, description=None):
+        self.expression = expression
+        self.description = description
+
+    def describe(self):
+        return self.description or 'LocalVar({})'.format(self.expression)
+
+    def perform(self, context):
+        try:
+            return str(eval(self.expression, {}, dict(context.locals)))
+        except (NameError, AttributeError) as e:
+            raise SubstitutionFailure(
+                "Expression '{}' not found in context locals: {}".format(self.expression, e))
+
+
+class FindExecutable(Substitution):
+    """The path of a program on PATH; labkit knows `ros2` and its executables by name."""
+
+    def __init__(self, *, name):
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def describe(self):
+        return 'FindExec({})'.format(' + '.join(s.describe() for s in self.name))
+
+    def perform(self, context):
+        from labkit import executables
+        name = perform_substitutions(context, self.name)
+        if name == 'ros2':
+            return '/opt/ros/humble/bin/ros2'
+        for package, executable in executables.executables():
+            if executable == name:
+                return executables.path_of(package, executable)
+        raise SubstitutionFailure("executable '{}' not found on the PATH".format(name))
+
+
+class AnonName(Substitution):
+    def __init__(self, name):
+        self.name = normalize_to_list_of_substitutions(name)
+
+    def perform(self, context):
+        import random
+        key = 'anon' + perform_substitutions(context, self.name)
+        if key not in context.locals:
+            context.locals[key] = '{}_{}'.format(perform_substitutions(context, self.name),
+                                                 random.Random(key).randint(0, 2 ** 31))
+        return context.locals[key]
