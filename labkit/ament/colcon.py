@@ -12,8 +12,7 @@ fixed base per build type plus a share per module, interface, data file),
 so a notebook prints the same times on every run and machine; the figures
 are of the size a real Humble build shows, not measurements.
 
-`colcon test` / `test-result` are meant to be added as further verbs here
-(VERBS), reusing discovery, selection and the per-package job loop.
+`colcon test` / `test-result` live in colcon_test.py (same discovery and selection).
 """
 import argparse
 import datetime
@@ -22,7 +21,7 @@ import time
 
 from labkit.ament import build, workspace
 
-VERBS = ('build', 'list')
+VERBS = ('build', 'list', 'test', 'test-result')
 
 
 # ------------------------------------------------------------------ output helpers
@@ -92,8 +91,8 @@ def _parser():
                       ('test-result', 'Show the test results generated when testing a set '
                                       'of packages')):
         if verb.startswith('test'):
-            p = sub.add_parser(verb, description=doc, help=doc)
-            p.add_argument('rest', nargs=argparse.REMAINDER, help=argparse.SUPPRESS)
+            from labkit.ament import colcon_test
+            colcon_test.add_arguments(sub.add_parser(verb, description=doc, help=doc), verb)
             continue
         p = sub.add_parser(verb, description=doc, help=doc)
         p.add_argument('--base-paths', nargs='*', default=['.'], metavar='PATH',
@@ -165,7 +164,9 @@ def run_command(command):
     else:
         clock = _Clock()
         try:
-            verb = {'build': build_verb, 'list': list_verb}.get(args.verb, not_yet_verb)
+            from labkit.ament import colcon_test
+            verb = {'build': build_verb, 'list': list_verb, 'test': colcon_test.test_verb,
+                    'test-result': colcon_test.test_result_verb}[args.verb]
             rc = verb(args, io, clock)
         except RuntimeError as e:
             io.eprint(f'[{clock.now():.3f}s] ERROR:colcon:colcon {args.verb}: {e}')
@@ -275,13 +276,6 @@ def _override_check(args, selected, install_base, io, clock):
         'a package anyways, add the following to the command line:\n\t--allow-overriding ' +
         ' '.join(overriding) + '\n\nThis may be promoted to an error in a future release of '
         'colcon-override-check.')
-
-
-def not_yet_verb(args, io, clock):
-    """`colcon test` / `test-result`: not in labkit yet; say so rather than pretend."""
-    io.eprint(f'labkit: `colcon {args.verb}` is not available yet (it comes with the '
-              'testing chapter); `colcon build` and `colcon list` are.')
-    return 1
 
 
 def list_verb(args, io, clock):
