@@ -190,6 +190,14 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
          labkit_root])
     env['LABKIT_TIME'] = world.mode()
     env.pop('PYTEST_CURRENT_TEST', None)
+    # colcon reads pytest through a pipe: no colours (a Jupyter kernel sets FORCE_COLOR=1)
+    for name in ('FORCE_COLOR', 'PY_COLORS', 'CLICOLOR_FORCE'):
+        env.pop(name, None)
+    # the plugins of this Python (nbval, xdist...) are not a Humble machine's, and slow
+    env['PYTEST_DISABLE_PLUGIN_AUTOLOAD'] = '1'
+    # colcon reads pytest through a pipe: plain text, whatever the notebook's terminal says
+    env['PY_COLORS'] = '0'
+    env.pop('FORCE_COLOR', None)
     started = time.monotonic()
     done = subprocess.run([sys.executable, '-m', 'pytest'], cwd=pkg.path, env=env,
                           stdin=subprocess.DEVNULL, capture_output=True, text=True)
@@ -197,8 +205,8 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
     counts = _counts(junit)
     virtual = world.mode() == 'virtual'
     cost = 0.45 + 0.04 * sum(counts) if virtual else measured
-    out = [_shown(line, cost, virtual) for line in done.stdout.splitlines()]
-    err = [_shown(line, cost, virtual) for line in done.stderr.splitlines()]
+    out = [x for x in (_shown(ln, cost, virtual) for ln in done.stdout.splitlines()) if x is not None]
+    err = [x for x in (_shown(ln, cost, virtual) for ln in done.stderr.splitlines()) if x is not None]
     return done.returncode, out, err, cost
 
 
@@ -216,12 +224,24 @@ def _shown(line, cost, virtual):
     home = files.home()
     if files._home is not None:
         line = line.replace(home, files.SHOWN_HOME)
-    line = line.replace(', configfile: ' + os.devnull, '')
+    if line.startswith('configfile: ') and line.endswith(os.devnull.lstrip('/')):
+        return None
     if virtual:
         if line.startswith('platform linux -- '):
             return HUMBLE_PLATFORM
         line = re.sub(r' in \d+\.\d+s( \([0-9:]+\))? (=+)$', f' in {cost:.2f}s \\2', line)
-    return line
+    return _recentre(line)
+
+
+def _recentre(line, width=80):
+    """pytest's `==== title ====` lines, re-padded after a path or time in them changed."""
+    m = re.match(r'^([=_-])\1+ (.*?) \1+$', line)
+    if not m:
+        return line
+    sep, title = m.groups()
+    fill = sep * max((width - len(title) - 2) // 2, 1)
+    line = f'{fill} {title} {fill}'
+    return line + sep if len(line) + 1 <= width else line
 
 
 # ------------------------------------------------------------------ colcon test-result

@@ -4,10 +4,14 @@ Launch files run unchanged: `LaunchDescription`, `launch.actions`,
 `launch.substitutions`, `launch.conditions`, `launch.launch_description_sources`,
 and `launch_ros.actions.Node` (labkit.launch_ros). `LaunchService` (service.py)
 visits the description and starts each node as a labkit process with the
-console lines of `ros2 launch`. Event handlers, XML/YAML launch files and
-composable nodes come later (issue 6); they fit in as more actions.
+console lines of `ros2 launch`; `launch.events` and `launch.event_handlers`
+react to processes starting, writing and exiting, and to shutdown. XML/YAML
+launch files and composable nodes are not there yet.
 """
 from labkit.launch import actions, conditions, launch_description_sources, substitutions  # noqa
+from labkit.launch import event_handlers, events  # noqa: F401
+from labkit.launch.event_handlers import EventHandler  # noqa: F401
+from labkit.launch.events import Event  # noqa: F401
 from labkit.launch.action import Action, LaunchDescriptionEntity  # noqa: F401
 from labkit.launch.launch_context import LaunchContext  # noqa: F401
 from labkit.launch.launch_description import LaunchDescription  # noqa: F401
@@ -28,6 +32,6 @@ def register():
 
 SomeSubstitutionsType = object  # typing aliases used in annotations only
 
-__all__ = ['Action', 'LaunchContext', 'LaunchDescription', 'LaunchDescriptionEntity',
+__all__ = ['Action', 'Event', 'EventHandler', 'event_handlers', 'events', 'LaunchContext', 'LaunchDescription', 'LaunchDescriptionEntity',
            'LaunchService', 'Substitution', 'actions', 'conditions',
            'launch_description_sources', 'register', 'substitutions']

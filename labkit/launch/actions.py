@@ -1,4 +1,4 @@
-"""launch.actions: the actions a launch file declares (the core set; more come with issue 6)."""
+"""launch.actions: the actions a launch file declares."""
 import os
 
 from labkit.launch.action import Action
@@ -13,13 +13,22 @@ class DeclareLaunchArgument(Action):
         self.__name = name
         self.__default = None if default_value is None else \
             normalize_to_list_of_substitutions(default_value)
-        self.__description = description if description is not None else \
-            'no description given'
-        self.__choices = list(choices) if choices is not None else None
-        if self.__choices is not None and default_value is not None and \
-                isinstance(default_value, str) and default_value not in self.__choices:
-            raise RuntimeError('Provided default_value "{}" is not in provided choices "{}".'
-                               .format(default_value, self.__choices))
+        if choices is not None:
+            choices = list(choices)
+            if not choices:
+                raise RuntimeError(
+                    'Provided choices arg is empty. Use None to ignore the choice list.')
+            if isinstance(default_value, str) and default_value not in choices:
+                raise RuntimeError('Provided default_value "{}" is not in provided choices "{}".'
+                                   .format(default_value, choices))
+        if description is None:
+            description = 'no description given' if choices is None else \
+                'One of: ' + str(choices)
+        elif choices is not None:
+            description += ('' if description.endswith('.') else '.') + \
+                ' Valid choices are: ' + str(choices)
+        self.__description = description
+        self.__choices = choices
         self._conditionally_included = False
 
     @property
@@ -147,6 +156,10 @@ class IncludeLaunchDescription(Action):
     def launch_arguments(self):
         return list(self.__arguments)
 
+    def get_sub_entities(self):
+        description = self.__source.try_get_launch_description_without_context()
+        return [description] if description is not None else []
+
     def execute(self, context):
         description = self.__source.get_launch_description(context)
         location = self.__source.location
@@ -189,6 +202,9 @@ class TimerAction(Action):
         self.__period = period
         self.__actions = list(actions)
 
+    def describe_conditional_sub_entities(self):
+        return [('{} seconds pass'.format(self.__period), self.__actions)]
+
     def execute(self, context):
         period = float(perform(context, self.__period)) if not isinstance(
             self.__period, (int, float)) else float(self.__period)
@@ -214,6 +230,12 @@ class RegisterEventHandler(Action):
     @property
     def event_handler(self):
         return self.__event_handler
+
+    def describe_conditional_sub_entities(self):
+        entities = getattr(self.__event_handler, '_callback', None)
+        if isinstance(entities, (list, tuple)):
+            return [('event handler', list(entities))]
+        return []
 
     def execute(self, context):
         context.register_event_handler(self.__event_handler)
@@ -257,6 +279,8 @@ class ExecuteProcess(Action):
     process whose output is that verb's) and labkit executables named by their path
     or name. `shell=True` joins the pieces into one command line, as a shell would.
     """
+
+    _completes_on_exit = True
 
     def __init__(self, *, cmd, name=None, cwd=None, env=None, additional_env=None,
                  shell=False, sigterm_timeout=None, sigkill_timeout=None, emulate_tty=False,

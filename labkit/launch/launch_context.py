@@ -18,6 +18,9 @@ class LaunchContext:
         if event_handler in self._event_handlers:
             self._event_handlers.remove(event_handler)
 
+    def would_handle_event(self, event):
+        return any(handler.matches(event) for handler in self._event_handlers)
+
     def emit_event_sync(self, event):
         self.launch_service.emit_event(event)
 

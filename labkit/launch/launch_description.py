@@ -24,20 +24,21 @@ class LaunchDescription(LaunchDescriptionEntity):
         self.add_entity(action)
 
     def get_launch_arguments(self, conditional_inclusion=False):
-        """DeclareLaunchArgument actions, also inside groups (in order, no duplicates)."""
-        from labkit.launch.actions import DeclareLaunchArgument, GroupAction
-        found, names = [], set()
+        """DeclareLaunchArgument actions found without running anything: in groups, and in
+        included files whose path is known before launch (first declaration wins)."""
+        from labkit.launch.actions import DeclareLaunchArgument
+        found = []
 
         def walk(entities, conditional):
-            for e in entities:
-                if isinstance(e, DeclareLaunchArgument):
-                    if e.name not in names:
-                        names.add(e.name)
-                        e._conditionally_included = conditional
-                        found.append(e)
-                elif isinstance(e, GroupAction):
-                    walk(e.get_sub_entities(), conditional or e.condition is not None)
-                elif isinstance(e, LaunchDescription):
-                    walk(e.entities, conditional)
+            for entity in entities:
+                if isinstance(entity, DeclareLaunchArgument):
+                    if entity.name in (a.name for a in found):
+                        continue
+                    entity._conditionally_included = conditional or \
+                        entity.condition is not None
+                    found.append(entity)
+                walk(entity.describe_sub_entities(), False)
+                for _, entities_ in entity.describe_conditional_sub_entities():
+                    walk(entities_, True)
         walk(self.__entities, conditional_inclusion)
         return found

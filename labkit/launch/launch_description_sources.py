@@ -65,24 +65,18 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
         from labkit.launch.utilities import perform
         if self._launch_description is None:
             self._location = perform(context, self._path)
-            self._launch_description = get_launch_description_from_python_launch_file(
-                self._location)
+            self._launch_description = self._load(self._location)
         return self._launch_description
+
+    _load = staticmethod(get_launch_description_from_python_launch_file)
 
     def try_get_launch_description_without_context(self):
         from labkit.launch.utilities import is_a_substitution
         if self._launch_description is None and not is_a_substitution(self._path):
-            self._location = self._path
-            self._launch_description = get_launch_description_from_python_launch_file(
-                self._path)
+            self._location = self._path if isinstance(self._path, str) else ''.join(self._path)
+            self._launch_description = self._load(self._location)
         return self._launch_description
 
 
 class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):
-    def get_launch_description(self, context):
-        from labkit.launch.utilities import perform
-        if self._launch_description is None:
-            self._location = perform(context, self._path)
-            self._launch_description = get_launch_description_from_any_launch_file(
-                self._location)
-        return self._launch_description
+    _load = staticmethod(get_launch_description_from_any_launch_file)

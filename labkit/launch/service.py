@@ -6,11 +6,15 @@ The console lines are launch's: the log folder and verbosity first, one
 `process has died [pid N, exit code C, cmd '...'].`. The service ends when
 every process has ended (and no timer is pending), or at Ctrl-C (a job's
 stop): `user interrupted with ctrl-c (SIGINT)`, then every process is stopped.
+Events (process started / output / exited, execution complete, shutdown) are
+queued and handled between visits by the registered event handlers, newest first.
 """
 import atexit
 import datetime
 import os
 import socket
+import sys
+from collections import deque
 
 from labkit.launch.launch_context import LaunchContext
 
@@ -31,13 +35,16 @@ atexit.register(_remove_params_files)
 
 
 class _Child:
-    def __init__(self, name, cmd, output):
+    def __init__(self, name, cmd, output, action=None, argv=None):
         self.name = name            # e.g. capture_image-1
         self.cmd = cmd              # shown in "process has died"
+        self.argv = argv or []
         self.output = output        # 'screen' | 'log' | 'both'
+        self.action = action        # the ExecuteProcess/Node that started it
         self.proc = None
         self.reported = False
         self.partial = {'stdout': '', 'stderr': ''}
+        self.pending_io = {'stdout': '', 'stderr': ''}   # not yet turned into ProcessIO
         self.held = []              # output kept back while the other processes start
 
 
@@ -48,8 +55,10 @@ class LaunchService:
         self._descriptions = []
         self._children = []
         self._timers = []           # [deadline_ns, actions]
+        self._events = deque()
         self._count = 0
         self._holding = False
+        self._shutting_down = False
         self._params_files = []
         from labkit import process
         self._owner = process.current()     # the process whose output is the console
@@ -57,6 +66,9 @@ class LaunchService:
     # ------------------------------------------------------------------ API
     def include_launch_description(self, launch_description):
         self._descriptions.append(launch_description)
+
+    def emit_event(self, event):
+        self._events.append(event)
 
     def run(self, *, shutdown_when_idle=True):
         """Run until every process ended (or Ctrl-C, or a Shutdown event); the exit code."""
@@ -75,14 +87,86 @@ class LaunchService:
                 self._print('[ERROR] [launch]: Caught exception in launch (see debug for '
                             f'traceback): {message}\n')
                 self._shutting_down = True
-                self._shutdown()
+                self._shutdown(send_sigint=True)
                 return 1
         finally:
             self._cleanup()
         return 0
 
     def _loop(self, shutdown_when_idle):
-        from labkit.events_placeholder import _noop  # noqa  (replaced below)
+        from labkit.graph import world
+        from labkit.launch.events import Shutdown
+        while True:
+            self._collect_io()
+            if not self._events:        # a process's last output is handled before its exit
+                self._report_exits()
+            if self._events:
+                self._process_events()
+                if self._shutting_down:
+                    return
+                continue
+            now = world.system_ns()
+            due = [t for t in self._timers if t[0] <= now]
+            for timer in due:
+                self._timers.remove(timer)
+                self._visit_all(timer[1])
+            if due:
+                continue
+            if not self._running() and (not self._timers or not shutdown_when_idle):
+                self.emit_event(Shutdown(reason='idle'))
+                continue
+            self._wait()
+
+    def _interrupted(self):
+        """Ctrl-C: the Shutdown event (OnShutdown handlers run), then every process stops."""
+        from labkit.launch.events import Shutdown
+        self._events.clear()
+        self.emit_event(Shutdown(reason='ctrl-c (SIGINT)', due_to_sigint=True))
+        try:
+            self._process_events()
+        except KeyboardInterrupt:
+            pass
+        except Exception as e:      # a failing handler must not keep processes running
+            self.log_error(str(e))
+        if not self._shutting_down:
+            self._shutting_down = True
+            self._shutdown()
+
+    # ------------------------------------------------------------------ events
+    def _process_events(self):
+        from labkit.launch.events import Shutdown
+        while self._events:
+            event = self._events.popleft()
+            if isinstance(event, Shutdown) and self._shutting_down:
+                continue
+            for handler in list(self.context._event_handlers):
+                if handler.matches(event):
+                    saved = self.context.locals.get('event')
+                    entities = handler.handle(event, self.context)
+                    self._visit_all(entities or [])
+                    self.context.locals['event'] = saved
+            if isinstance(event, Shutdown):
+                self._shutting_down = True
+                self._shutdown(send_sigint=not event.due_to_sigint)
+                self._collect_io()
+                self._report_exits()
+
+    def _collect_io(self):
+        """Output a process wrote since the last look: one ProcessIO event per stream
+        (like one read of a pipe), for processes some handler may watch."""
+        from labkit.launch.events.process import ProcessStderr, ProcessStdout
+        for child in self._children:
+            for stream, kind in (('stdout', ProcessStdout), ('stderr', ProcessStderr)):
+                text = child.pending_io[stream]
+                if text:
+                    child.pending_io[stream] = ''
+                    self.emit_event(kind(text=text.encode(), **self._event_fields(child)))
+
+    @staticmethod
+    def _event_fields(child):
+        return dict(action=child.action, name=child.name, cmd=child.argv,
+                    cwd=None, env=None, pid=child.proc.pid)
+
     # ------------------------------------------------------------------ visiting
     def _visit_all(self, entities):
         self._holding = True
@@ -110,6 +194,8 @@ class LaunchService:
 
     def add_timer(self, period, actions):
         from labkit.graph import world
+        if self._shutting_down:
+            return
         self._timers.append([world.system_ns() + int(period * 1e9), list(actions)])
 
     def add_params_file(self, path):
@@ -117,17 +203,50 @@ class LaunchService:
         _PARAMS_FILES.add(path)     # a launch still running when Python exits leaves none
 
     def start_node(self, *, package, executable, argv, name=None, output='log', cmd=None,
-                   exec_name=None):
+                   exec_name=None, action=None):
         """Start `ros2 run package executable argv...` as one launched process."""
+        return self._start(f'{exec_name or executable}', cmd or [executable, *argv], output,
+                           action, argv=[package, executable, *argv])
+
+    def start_command(self, action, argv, *, label_name, cmd_text, output='log'):
+        """An ExecuteProcess command line: `ros2 run ...`, another ros2 verb, or a labkit
+        executable by path or name."""
+        from labkit import executables
+        if not argv:
+            raise RuntimeError('ExecuteProcess: empty command')
+        program = os.path.basename(argv[0])
+        if program == 'ros2' and argv[1:2] == ['run'] and len(argv) >= 4:
+            return self._start(label_name, [cmd_text], output, action, argv=argv[2:])
+        if program == 'ros2':
+            return self._start(label_name, [cmd_text], output, action,
+                               main=_ros2_verb_main, args=['ros2', *argv[1:]])
+        package = os.path.basename(os.path.dirname(argv[0]))    # <prefix>/lib/<pkg>/<exe>
+        if executables.lookup(package, program) is not None:
+            found = (package, program)
+        else:
+            found = next(((p, e) for p, e in executables.executables() if e == program), None)
+        if found is None:
+            raise RuntimeError("labkit can only launch `ros2 ...` commands and ROS executables, "
+                               "not '{}'".format(' '.join(argv)))
+        return self._start(label_name, [cmd_text], output, action,
+                           argv=[*found, *argv[1:]])
+
+    def _start(self, name, cmd, output, action, *, argv=None, main=None, args=None):
         from labkit import process
+        from labkit.launch.events.process import ProcessStarted
+        if self._shutting_down:
+            return None
         self._count += 1
-        label = f'{exec_name or executable}-{self._count}'
-        child = _Child(label, ' '.join(cmd or [executable, *argv]), output)
+        label = f'{name}-{self._count}'
+        child = _Child(label, ' '.join(cmd), output, action, list(cmd))
         self._children.append(child)
-        child.proc = process.start([package, executable, *argv], name=label,
-                                   sink=lambda stream, text: self._child_output(
-                                       child, stream, text))
+        sink = (lambda stream, text: self._child_output(child, stream, text))
+        if main is not None:
+            child.proc = process.start(name=label, main=main, args=args, sink=sink)
+        else:
+            child.proc = process.start(argv, name=label, sink=sink)
         self.log_info(f'process started with pid [{child.proc.pid}]', logger=label)
+        self.emit_event(ProcessStarted(**self._event_fields(child)))
         return child.proc
 
     # ------------------------------------------------------------------ output
@@ -135,6 +254,8 @@ class LaunchService:
         self._owner._write('stdout', text)
 
     def _child_output(self, child, stream, text):
+        if child.action is not None:
+            child.pending_io[stream] += text
         if child.output == 'log' and stream == 'stdout':
             return      # output='log': stdout goes to the log file only, stderr is shown
         buf = child.partial[stream] + text
@@ -164,6 +285,8 @@ class LaunchService:
         return [c for c in self._children if c.proc is not None and c.proc.running]
 
     def _report_exits(self):
+        from labkit.launch.events import ExecutionComplete
+        from labkit.launch.events.process import ProcessExited
         for child in self._children:
             if child.reported or child.proc is None or child.proc.running:
                 continue
@@ -176,6 +299,9 @@ class LaunchService:
             else:
                 self.log_error(f"process has died [pid {child.proc.pid}, exit code {code}, "
                                f"cmd '{child.cmd}'].", logger=child.name)
+            if child.action is not None:
+                self.emit_event(ProcessExited(returncode=code, **self._event_fields(child)))
+                self.emit_event(ExecutionComplete(action=child.action))
 
     def _wait(self):
         from labkit.graph import world
@@ -185,15 +311,22 @@ class LaunchService:
             timeout = max(0, min(t[0] for t in self._timers) - world.system_ns())
 
         def something_happened():
-            return any(not c.reported and c.proc is not None and not c.proc.running
-                       for c in self._children)
+            return bool(self._events) or any(
+                (not c.reported and c.proc is not None and not c.proc.running) or
+                c.pending_io['stdout'] or c.pending_io['stderr'] for c in self._children)
         _wait.wait(something_happened, timeout_ns=timeout)
 
-    def _shutdown(self):
+    def _shutdown(self, send_sigint=False):
+        """Stop every process. At Ctrl-C the terminal already sent them SIGINT; any other
+        shutdown (an event, an error) has launch send it, and say so."""
         self._timers.clear()
-        for child in self._children:
-            if child.proc is not None and child.proc.running:
-                child.proc.stop()
+        running = [c for c in self._children if c.proc is not None and c.proc.running]
+        if send_sigint:
+            for child in running:
+                self.log_info(f"sending signal 'SIGINT' to process[{child.name}]",
+                              logger=child.name)
+        for child in running:
+            child.proc.stop()
         self._report_exits()
 
     def _cleanup(self):
@@ -211,3 +344,19 @@ class LaunchService:
         name = '{}-{}-{}'.format(stamp.strftime('%Y-%m-%d-%H-%M-%S-%f'), host,
                                  self._owner.pid)
         return files.display(os.path.join(files.expand('~'), '.ros', 'log', name))
+
+
+def _ros2_verb_main(args=None):
+    """A `ros2 <verb> ...` command as a launched process: its lines as it prints them."""
+    from labkit.cli.ros2 import run_command
+
+    def echo(stream, text):
+        (sys.stdout if stream == 'stdout' else sys.stderr).write(text)
+    result = run_command(list(args[1:]), echo=echo)
+    if getattr(result, 'wait', None) is not None and result.returncode is None:
+        try:
+            result.wait()
+        except KeyboardInterrupt:
+            result.stop()
+        return 0
+    return result.returncode or 0

@@ -193,7 +193,7 @@ class LocalSubstitution(Substitution):
         self.description = description
 
     def describe(self):
-        return self.description or 'LocalVar({})'.format(self.expression)
+        return "LocalVar('{}')".format(self.description or self.expression)
 
     def perform(self, context):
         try:

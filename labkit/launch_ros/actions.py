@@ -8,7 +8,7 @@ from labkit.launch.action import Action
 from labkit.launch.utilities import is_a_substitution, normalize_to_list_of_substitutions, \
     perform
 
-__all__ = ['Node']
+__all__ = ['Node', 'PushRosNamespace', 'SetParameter', 'SetRemap']
 
 
 def executable_path(package, executable):
@@ -32,6 +32,7 @@ def executable_path(package, executable):
 
 
 class Node(Action):
+    _completes_on_exit = True
     def __init__(self, *, executable, package=None, name=None, namespace=None, exec_name=None,
                  parameters=None, remappings=None, ros_arguments=None, arguments=None,
                  output='log', emulate_tty=False, respawn=False, additional_env=None,
@@ -70,9 +71,9 @@ class Node(Action):
         ros_args = [perform(context, a) for a in self.__ros_arguments]
         if self.__name is not None:
             ros_args += ['-r', '__node:=' + perform(context, self.__name)]
-        if self.__namespace is not None:
-            ns = perform(context, self.__namespace)
-            ros_args += ['-r', '__ns:=' + (ns if ns.startswith('/') else '/' + ns)]
+        ns = _full_namespace(context, self.__namespace)
+        if ns is not None:
+            ros_args += ['-r', '__ns:=' + ns]
         from labkit.launch_ros.parameter_descriptions import ParameterFile
         for entry in self.__parameters:
             if isinstance(entry, ParameterFile):
@@ -85,13 +86,17 @@ class Node(Action):
                     raise RuntimeError(
                         "Parameter file path is not a file: {}".format(path_))
                 ros_args += ['--params-file', path_]
-        for src, dst in self.__remappings:
+        for name, value in context.launch_configurations.get('ros_global_params', []):
+            ros_args += ['-p', '{}:={}'.format(name, value)]
+        remaps = list(context.launch_configurations.get('ros_remaps', [])) + \
+            [(perform(context, s), perform(context, d)) for s, d in self.__remappings]
+        for src, dst in remaps:
             ros_args += ['-r', '{}:={}'.format(perform(context, src), perform(context, dst))]
         full = argv + (['--ros-args'] + ros_args if ros_args else [])
         exec_name = perform(context, self.__exec_name) if self.__exec_name else None
         service.start_node(package=package, executable=executable, argv=full,
                            output=perform(context, self.__output), cmd=[path, *full],
-                           exec_name=exec_name)
+                           exec_name=exec_name, action=self)
 
     @staticmethod
     def _params_file(context, params, service):
@@ -110,6 +115,64 @@ class Node(Action):
             yaml.safe_dump({'/**': {'ros__parameters': values}}, f, default_flow_style=False)
         service.add_params_file(path)
         return path
+
+
+def _full_namespace(context, namespace):
+    """The node's namespace under a PushRosNamespace (an absolute one stays as it is)."""
+    pushed = context.launch_configurations.get('ros_namespace')
+    ns = None if namespace is None else perform(context, namespace)
+    if ns is not None and ns.startswith('/'):
+        return ns
+    if pushed is None:
+        return None if ns is None else '/' + ns
+    if not ns:
+        return pushed
+    return pushed.rstrip('/') + '/' + ns
+
+
+class PushRosNamespace(Action):
+    """Put the nodes after it (in its GroupAction's scope) under a namespace."""
+
+    def __init__(self, namespace, **kwargs):
+        super().__init__(**kwargs)
+        self.__namespace = namespace
+
+    @property
+    def namespace(self):
+        return self.__namespace
+
+    def execute(self, context):
+        ns = perform(context, self.__namespace)
+        if not ns.startswith('/'):
+            pushed = context.launch_configurations.get('ros_namespace', '')
+            ns = pushed.rstrip('/') + '/' + ns
+        context.launch_configurations['ros_namespace'] = ns.rstrip('/') or '/'
+
+
+class SetRemap(Action):
+    """A remapping for every node after it in the scope."""
+
+    def __init__(self, src, dst, **kwargs):
+        super().__init__(**kwargs)
+        self.__src, self.__dst = src, dst
+
+    def execute(self, context):
+        remaps = list(context.launch_configurations.get('ros_remaps', []))
+        remaps.append((perform(context, self.__src), perform(context, self.__dst)))
+        context.launch_configurations['ros_remaps'] = remaps
+
+
+class SetParameter(Action):
+    """A parameter set on every node after it in the scope."""
+
+    def __init__(self, name, value, **kwargs):
+        super().__init__(**kwargs)
+        self.__name, self.__value = name, value
+
+    def execute(self, context):
+        params = list(context.launch_configurations.get('ros_global_params', []))
+        params.append((perform(context, self.__name), perform(context, self.__value)))
+        context.launch_configurations['ros_global_params'] = params
 
 
 def _evaluate(context, value):

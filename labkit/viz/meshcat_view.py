@@ -20,6 +20,7 @@ import functools
 import gzip
 import html as _html
 import os
+import re
 import struct
 import threading
 
@@ -128,6 +129,9 @@ def _geometry(shape, base_dir=None):
     return None, None
 
 
+_DAE_IMAGES = re.compile(r"<library_images>.*?</library_images>", re.S)
+
+
 def _mesh(shape, base_dir):
     from labkit.robots import packages
     path = packages.resolve_uri(shape.filename, base_dir)
@@ -141,6 +145,10 @@ def _mesh(shape, base_dir):
         elif fmt in ("dae", "obj"):
             with open(path, encoding="utf-8", errors="replace") as handle:
                 data = handle.read()
+            if fmt == "dae":
+                # The static page cannot fetch the texture files a DAE names (they
+                # would be 404s on the book's pages): drop them, keep the colours.
+                data = _DAE_IMAGES.sub("", data)
         else:
             return None, None
     except OSError:

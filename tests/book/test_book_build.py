@@ -157,7 +157,9 @@ def test_vendored_files_are_served(book_html):
 
 def test_widget_scripts_only_on_widget_pages(book_html):
     intro = parse(book_html / "intro.html")
-    assert not [u for u in intro.urls if "vendor/" in u]
+    # Sphinx puts MathJax on a page whose toctree holds a page with math (the root
+    # holds them all), so only the widget manager's scripts must stay off it.
+    assert not [u for u in intro.urls if "vendor/" in u and "vendor/mathjax/" not in u]
 
 
 def test_chinese_words_in_search_index(book_html):
