@@ -4,6 +4,8 @@ PY      := .venv/bin/python
 PIP     := .venv/bin/pip
 STAMP   := .venv/.installed
 export LABKIT_TIME ?= virtual
+# Dates printed by tools (ros2 bag info, default bag names) must not depend on the machine.
+export TZ ?= UTC
 
 .PHONY: setup test unit nbval browser book book-exec lab bench clean
 

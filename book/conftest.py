@@ -3,3 +3,4 @@
 import os
 
 os.environ.setdefault("LABKIT_TIME", "virtual")
+os.environ.setdefault("TZ", "UTC")      # dates printed by tools do not depend on the machine

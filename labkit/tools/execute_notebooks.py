@@ -23,6 +23,7 @@ def execute(path, timeout=600):
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     os.environ["LABKIT_TIME"] = "virtual"
+    os.environ.setdefault("TZ", "UTC")
     paths = []
     for arg in argv or ["book"]:
         p = pathlib.Path(arg)
