@@ -32,6 +32,7 @@ def register():
 
 SomeSubstitutionsType = object  # typing aliases used in annotations only
 
-__all__ = ['Action', 'Event', 'EventHandler', 'event_handlers', 'events', 'LaunchContext', 'LaunchDescription', 'LaunchDescriptionEntity',
+__all__ = ['Action', 'Event', 'EventHandler', 'event_handlers', 'events', 'LaunchContext',
+           'LaunchDescription', 'LaunchDescriptionEntity',
            'LaunchService', 'Substitution', 'actions', 'conditions',
            'launch_description_sources', 'register', 'substitutions']

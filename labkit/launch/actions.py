@@ -119,14 +119,14 @@ class GroupAction(Action):
 
     def execute(self, context):
         entities = []
-        if self.__scoped:
-            entities.append(PushLaunchConfigurations())
+        if self.__scoped:       # launch configurations and the environment, both scoped
+            entities += [PushLaunchConfigurations(), PushEnvironment()]
             if not self.__forwarding:
-                entities.append(_ClearLaunchConfigurations())
+                entities += [ResetEnvironment(), _ClearLaunchConfigurations()]
         entities += [SetLaunchConfiguration(k, v) for k, v in self.__configs.items()]
         entities += self.__actions
         if self.__scoped:
-            entities.append(PopLaunchConfigurations())
+            entities += [PopEnvironment(), PopLaunchConfigurations()]
         return entities
 
 
@@ -212,12 +212,60 @@ class TimerAction(Action):
 
 
 class SetEnvironmentVariable(Action):
+    """Set an environment variable for the processes launched after it (in its scope)."""
+
     def __init__(self, name, value, **kwargs):
         super().__init__(**kwargs)
         self.__name, self.__value = name, value
 
     def execute(self, context):
-        os.environ[perform(context, self.__name)] = perform(context, self.__value)
+        env = dict(context.environment)
+        env[perform(context, self.__name)] = perform(context, self.__value)
+        context._set_environment(env)
+
+
+class UnsetEnvironmentVariable(Action):
+    def __init__(self, name, **kwargs):
+        super().__init__(**kwargs)
+        self.__name = name
+
+    def execute(self, context):
+        env = dict(context.environment)
+        env.pop(perform(context, self.__name), None)
+        context._set_environment(env)
+
+
+class AppendEnvironmentVariable(Action):
+    """Add a value to a path-like variable (after it, or before with prepend=True)."""
+
+    def __init__(self, name, value, *, prepend=False, separator=os.pathsep, **kwargs):
+        super().__init__(**kwargs)
+        self.__name, self.__value = name, value
+        self.__prepend, self.__separator = prepend, separator
+
+    def execute(self, context):
+        env = dict(context.environment)
+        name, value = perform(context, self.__name), perform(context, self.__value)
+        if env.get(name):
+            value = value + self.__separator + env[name] if self.__prepend else \
+                env[name] + self.__separator + value
+        env[name] = value
+        context._set_environment(env)
+
+
+class PushEnvironment(Action):
+    def execute(self, context):
+        context._push_environment()
+
+
+class PopEnvironment(Action):
+    def execute(self, context):
+        context._pop_environment()
+
+
+class ResetEnvironment(Action):
+    def execute(self, context):
+        context._set_environment(dict(context.launch_service.initial_environment()))
 
 
 class RegisterEventHandler(Action):

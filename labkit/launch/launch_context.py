@@ -1,4 +1,6 @@
-"""LaunchContext: launch configurations (the values of launch arguments) and scopes."""
+"""LaunchContext: launch configurations (the values of launch arguments), the environment
+launched processes get, and their scopes."""
+import os
 
 
 class LaunchContext:
@@ -8,6 +10,8 @@ class LaunchContext:
         self.launch_configurations = {}
         self.locals = {}                # e.g. current_launch_file_directory
         self._stack = []
+        self.environment = dict(os.environ)    # what SetEnvironmentVariable changes
+        self._environment_stack = []
         self.launch_service = None      # the runner that starts processes
         self._event_handlers = []       # newest first, as launch keeps them
 
@@ -32,6 +36,22 @@ class LaunchContext:
 
     def _pop_launch_configurations(self):
         self.launch_configurations, self.locals = self._stack.pop()
+
+    def _push_environment(self):
+        self._environment_stack.append(dict(self.environment))
+
+    def _pop_environment(self):
+        self._set_environment(self._environment_stack.pop())
+
+    def _set_environment(self, values):
+        """Also os.environ: launched nodes are threads of this Python, reading os.environ
+        (the service puts os.environ back when the launch ends)."""
+        if self.launch_service is not None:
+            self.launch_service.save_environment()
+        self.environment = dict(values)
+        for name in [n for n in os.environ if n not in values]:
+            del os.environ[name]
+        os.environ.update(values)
 
     def extend_locals(self, values):
         self.locals.update(values)

@@ -14,6 +14,7 @@ import datetime
 import os
 import socket
 import sys
+import threading
 from collections import deque
 
 from labkit.launch.launch_context import LaunchContext
@@ -45,6 +46,7 @@ class _Child:
         self.reported = False
         self.partial = {'stdout': '', 'stderr': ''}
         self.pending_io = {'stdout': '', 'stderr': ''}   # not yet turned into ProcessIO
+        self.io_lock = threading.Lock()     # live time: the process writes while we read
         self.held = []              # output kept back while the other processes start
 
 
@@ -60,6 +62,7 @@ class LaunchService:
         self._holding = False
         self._shutting_down = False
         self._params_files = []
+        self._saved_environ = None      # os.environ before the first SetEnvironmentVariable
         from labkit import process
         self._owner = process.current()     # the process whose output is the console
 
@@ -157,9 +160,9 @@ class LaunchService:
         from labkit.launch.events.process import ProcessStderr, ProcessStdout
         for child in self._children:
             for stream, kind in (('stdout', ProcessStdout), ('stderr', ProcessStderr)):
-                text = child.pending_io[stream]
+                with child.io_lock:
+                    text, child.pending_io[stream] = child.pending_io[stream], ''
                 if text:
-                    child.pending_io[stream] = ''
                     self.emit_event(kind(text=text.encode(), **self._event_fields(child)))
 
     @staticmethod
@@ -197,6 +200,13 @@ class LaunchService:
         if self._shutting_down:
             return
         self._timers.append([world.system_ns() + int(period * 1e9), list(actions)])
+
+    def save_environment(self):
+        if self._saved_environ is None:
+            self._saved_environ = dict(os.environ)
+
+    def initial_environment(self):
+        return self._saved_environ if self._saved_environ is not None else dict(os.environ)
 
     def add_params_file(self, path):
         self._params_files.append(path)
@@ -255,7 +265,8 @@ class LaunchService:
 
     def _child_output(self, child, stream, text):
         if child.action is not None:
-            child.pending_io[stream] += text
+            with child.io_lock:
+                child.pending_io[stream] += text
         if child.output == 'log' and stream == 'stdout':
             return      # output='log': stdout goes to the log file only, stderr is shown
         buf = child.partial[stream] + text
@@ -330,6 +341,10 @@ class LaunchService:
         self._report_exits()
 
     def _cleanup(self):
+        if self._saved_environ is not None:     # what the launch set ends with it
+            for name in [n for n in os.environ if n not in self._saved_environ]:
+                del os.environ[name]
+            os.environ.update(self._saved_environ)
         _remove_params_files(self._params_files)
         self._params_files.clear()
 

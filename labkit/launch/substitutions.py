@@ -48,7 +48,7 @@ class EnvironmentVariable(Substitution):
 
     def perform(self, context):
         name = perform_substitutions(context, self.name)
-        value = os.environ.get(name)
+        value = getattr(context, 'environment', os.environ).get(name)
         if value is None:
             if self.default_value is None:
                 raise SubstitutionFailure(

@@ -80,6 +80,10 @@ def test_conditions_and_environment(ws, tmp_path):
     path = write(tmp_path, '''    return LaunchDescription([
         DeclareLaunchArgument('mode', default_value='sim'),
         SetEnvironmentVariable('LABKIT_LAUNCH_TEST', 'set by launch'),
+        GroupAction([
+            SetEnvironmentVariable('LABKIT_LAUNCH_TEST', 'in the group'),
+            LogInfo(msg=EnvironmentVariable('LABKIT_LAUNCH_TEST')),
+        ]),
         LogInfo(msg=EnvironmentVariable('LABKIT_LAUNCH_TEST')),
         LogInfo(msg='if', condition=IfCondition(PythonExpression(["'",
                 LaunchConfiguration('mode'), "' == 'sim'"]))),
@@ -90,20 +94,22 @@ def test_conditions_and_environment(ws, tmp_path):
         LogInfo(msg=TextSubstitution(text='text')),
     ])
 ''')
+    import os
     job = labkit.ros2(f'launch {path}')
     job.wait(1.0)
-    assert user_lines(job.output) == ['set by launch', 'if', 'a/sim/c', 'fallback', 'text']
+    assert user_lines(job.output) == ['in the group', 'set by launch', 'if', 'a/sim/c',
+                                      'fallback', 'text']
+    assert 'LABKIT_LAUNCH_TEST' not in os.environ      # the launch's environment ended with it
     job = labkit.ros2(f'launch {path} mode:=real')
     job.wait(1.0)
-    assert user_lines(job.output) == ['set by launch', 'equals', 'a/real/c', 'fallback',
-                                      'text']
-    import os
-    os.environ.pop('LABKIT_LAUNCH_TEST', None)
+    assert user_lines(job.output) == ['in the group', 'set by launch', 'equals', 'a/real/c',
+                                      'fallback', 'text']
 
 
 def test_execute_process_forms_and_idle_shutdown(ws, tmp_path):
     path = write(tmp_path, '''    talker = ExecuteProcess(cmd=['ros2', 'run', 'demo_nodes_py', 'talker'],
-                            name='my_talker', output='screen')
+                            name='my_talker',
+                            output='screen')
     topics = ExecuteProcess(cmd=[[FindExecutable(name='ros2'), ' topic list']], shell=True,
                             output='screen')
     return LaunchDescription([
