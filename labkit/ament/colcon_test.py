@@ -190,9 +190,6 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
          labkit_root])
     env['LABKIT_TIME'] = world.mode()
     env.pop('PYTEST_CURRENT_TEST', None)
-    # colcon reads pytest through a pipe: no colours (a Jupyter kernel sets FORCE_COLOR=1)
-    for name in ('FORCE_COLOR', 'PY_COLORS', 'CLICOLOR_FORCE'):
-        env.pop(name, None)
     # the plugins of this Python (nbval, xdist...) are not a Humble machine's, and slow
     env['PYTEST_DISABLE_PLUGIN_AUTOLOAD'] = '1'
     # colcon reads pytest through a pipe: plain text, whatever the notebook's terminal says

@@ -81,6 +81,8 @@ def ros2_magic(line):
 
     result = run_command(argv, echo=echo)
     if isinstance(result, Job):
+        if target is not None:
+            _redirect_job(result.process, target, mode)
         return  # its output arrives through the process sink, like a terminal's
     if target is not None:
         with open(target, mode) as f:
@@ -88,6 +90,25 @@ def ros2_magic(line):
     # lines the command made without the recorder (early argument errors) still show
     if not echoed and (result.stdout or result.stderr) and target is None:
         emit(result)
+
+
+def _redirect_job(process, target, mode):
+    """`%ros2 topic echo /x > file`: the job's later stdout goes on to the file, as in a
+    shell; its stderr still shows in the notebook."""
+    from labkit import process as processes
+    out = open(target, mode)
+
+    def sink(name, text):
+        if name == 'stdout':
+            out.write(text)
+            out.flush()
+            return
+        stream = processes._original.get(name)
+        if stream is not None:
+            stream.write(text)
+            stream.flush()
+
+    process.sink = sink
 
 
 MAGICS['ros2'] = ros2_magic
