@@ -138,7 +138,7 @@ def test_verb(args, io, clock):
 
     clock.add(0.2)
     io.print('')
-    io.print(f'Summary: {_plural(len(finished) + 0)} finished [{format_duration(clock.now())}]')
+    io.print(f'Summary: {_plural(len(finished))} finished [{format_duration(clock.now())}]')
     for names, what in ((failed, 'failed'), (stderr_pkgs, 'had stderr output'),
                         (with_failures, 'had test failures')):
         if names:
@@ -202,9 +202,14 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
     counts = _counts(junit)
     virtual = world.mode() == 'virtual'
     cost = 0.45 + 0.04 * sum(counts) if virtual else measured
-    out = [x for x in (_shown(ln, cost, virtual) for ln in done.stdout.splitlines()) if x is not None]
-    err = [x for x in (_shown(ln, cost, virtual) for ln in done.stderr.splitlines()) if x is not None]
+    out = _lines(done.stdout, cost, virtual)
+    err = _lines(done.stderr, cost, virtual)
     return done.returncode, out, err, cost
+
+
+def _lines(text, cost, virtual):
+    shown = (_shown(line, cost, virtual) for line in text.splitlines())
+    return [line for line in shown if line is not None]
 
 
 def _counts(junit):
@@ -367,9 +372,10 @@ def _linter_module(name, function_names):
 
 
 def pytest_load_initial_conftests(early_config, parser, args):
-    """Before the package's conftest and tests import anything: labkit's rclpy, linter stand-ins."""
+    """Before the package's conftest and tests import anything: labkit's rclpy, linters."""
     import importlib.util
-    from labkit import compat
+    from labkit import compat, plugins
+    plugins.register_all()      # launch, ament_index_python... as in the notebook
     compat.activate()
     for name, function_names in LINTERS.items():
         if importlib.util.find_spec(name) is not None:

@@ -101,3 +101,16 @@ def test_test_result_without_build_folder(ws):
     r = colcon.run_command('test-result')
     assert r.returncode == 2
     assert "Path 'build' does not exist" in r.stderr
+
+
+def test_pytest_that_cannot_start_fails_the_package(ws):
+    pkg = make_pkg(ws)
+    (pkg / 'conftest.py').write_text('raise RuntimeError("broken conftest")\n')
+    colcon.run_command('build')
+    r = colcon.run_command('test')
+    assert r.returncode == 1
+    assert 'Failed   <<< my_pkg [' in r.stderr and 'exited with code' in r.stderr
+    assert '  1 package failed: my_pkg' in r.stdout
+    # colcon's placeholder result is left where pytest wrote none
+    assert colcon.run_command('test-result').stdout.startswith(
+        'build/my_pkg/pytest.xml: 1 test, 1 error, 0 failures, 0 skipped')
