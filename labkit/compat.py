@@ -36,6 +36,11 @@ def register_alias(name, target):
     _ALIASES[name] = target
 
 
+def aliased_packages():
+    """The ROS packages labkit stands in for as Python modules (rclpy, tf2_ros, ...)."""
+    return set(_ALIASES)
+
+
 def is_active():
     return _finder is not None and _finder in sys.meta_path
 

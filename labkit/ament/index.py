@@ -86,6 +86,12 @@ def bundled_package_names():
         names |= set(executables.packages()) - source.workspace_packages()
     except Exception:
         pass
+    try:   # Python packages labkit stands in for (rclpy, launch, tf2_ros, cv_bridge, ...)
+        from labkit import compat, plugins
+        plugins.register_all()
+        names |= compat.aliased_packages()
+    except Exception:
+        pass
     try:
         from labkit.interfaces import registry
         names |= {n for n, kinds in registry._scan_root(registry.BUNDLED_SHARE).items()

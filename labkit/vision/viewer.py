@@ -78,7 +78,8 @@ class ImageViewer:
     def widget(self):
         if self._widget is None:
             from ipywidgets import Image as ImageWidget
-            self._widget = ImageWidget(value=bytes(self.snapshot()), format='png')
+            # JPEG: the widget's first picture is also kept in the notebook's saved state
+            self._widget = ImageWidget(value=self.jpeg(), format='jpeg')
         return self._widget
 
     def _push(self):
