@@ -24,6 +24,7 @@ virtual mode (the same text on every machine).
 from __future__ import annotations
 
 import html
+import os
 import itertools
 import threading
 import time
@@ -80,14 +81,30 @@ class LogEntry:
 
     @property
     def location(self) -> str:
-        # rqt_console's location column: file:function:line
-        return f"{self.file}:{self.function}:{self.line}"
+        # rqt_console's location column: file:function:line (labkit's own files shown
+        # relative to where labkit is installed, so no machine path is kept)
+        return f"{_shown_file(self.file)}:{self.function}:{self.line}"
 
     def stamp_string(self, utc: bool = True) -> str:
         """rqt_console's 'hh:mm:ss.ZZZ (yyyy-MM-dd)', ZZZ being the 9-digit nanoseconds."""
         sec, nsec = self.stamp
         t = time.gmtime(sec) if utc else time.localtime(sec)
         return time.strftime("%H:%M:%S", t) + f".{nsec:09d}" + time.strftime(" (%Y-%m-%d)", t)
+
+
+_LABKIT_PARENT = os.path.dirname(os.path.dirname(os.path.abspath(__file__))).rstrip(os.sep)
+_LABKIT_PARENT = os.path.dirname(_LABKIT_PARENT) + os.sep
+
+
+def _shown_file(path):
+    path = str(path or "")
+    if path.startswith(_LABKIT_PARENT):
+        return path[len(_LABKIT_PARENT):]
+    try:
+        from labkit.ament import files
+        return files.display(path)
+    except Exception:
+        return path
 
 
 class MessageFilter:
