@@ -7,7 +7,6 @@ Where the keys come from: in a notebook kernel, a focusable widget with
 buttons (labkit/viz/teleop_widget.py); in a terminal, the tty in raw mode;
 anywhere, `press('up')` (tests and book cells).
 """
-import sys
 import threading
 
 import labkit.rclpy as rclpy
@@ -115,34 +114,6 @@ def _in_notebook():
     return shell is not None and getattr(shell, "kernel", None) is not None
 
 
-class _TerminalKeys:
-    """Read raw keys from the controlling tty on a thread (restores the mode at the end)."""
-
-    def __init__(self, node):
-        import termios
-        self.node = node
-        self.fd = sys.stdin.fileno()
-        self.cooked = termios.tcgetattr(self.fd)
-        raw = termios.tcgetattr(self.fd)
-        raw[3] &= ~(termios.ICANON | termios.ECHO)
-        raw[6][termios.VMIN] = 0
-        raw[6][termios.VTIME] = 1          # read() returns after 0.1 s without a key
-        termios.tcsetattr(self.fd, termios.TCSANOW, raw)
-        self.thread = threading.Thread(target=self._loop, name="teleop-tty", daemon=True)
-        self.thread.start()
-
-    def _loop(self):
-        import os
-        while not self.node.quit_future.done():
-            data = os.read(self.fd, 1)
-            if data:
-                self.node.press_char(data.decode("latin-1"))
-
-    def close(self):
-        import termios
-        termios.tcsetattr(self.fd, termios.TCSANOW, self.cooked)
-
-
 def _open_keyboard(node):
     if _in_notebook():
         # the widget lives with the other viewers (labkit/viz); loaded only when a kernel can show it
@@ -150,12 +121,8 @@ def _open_keyboard(node):
         widget = TeleopWidget(node.press)
         widget.show()
         return widget
-    try:
-        if sys.stdin is not None and sys.stdin.isatty():
-            return _TerminalKeys(node)
-    except (OSError, ValueError, ImportError):
-        pass
-    return None
+    from labkit.sims._tty import open_terminal_keys
+    return open_terminal_keys(node.press_char, node.quit_future.done)
 
 
 def main(args=None):

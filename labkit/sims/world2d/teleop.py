@@ -4,7 +4,6 @@ The key map, speed keys and texts are those of teleop_twist_keyboard (a
 Python node). Keys come from `press('i')` (book cells, tests) or, in a
 terminal, from the tty in raw mode. CTRL-C ('\\x03') quits after a zero Twist.
 """
-import sys
 import threading
 
 import labkit.rclpy as rclpy
@@ -118,34 +117,6 @@ def press(*keys, teleop=None):
             target.press(char)
 
 
-class _TerminalKeys:
-    """Raw single characters from the controlling tty, on a thread."""
-
-    def __init__(self, teleop):
-        import termios
-        self.teleop = teleop
-        self.fd = sys.stdin.fileno()
-        self.cooked = termios.tcgetattr(self.fd)
-        raw = termios.tcgetattr(self.fd)
-        raw[3] &= ~(termios.ICANON | termios.ECHO | termios.ISIG)
-        raw[6][termios.VMIN] = 0
-        raw[6][termios.VTIME] = 1
-        termios.tcsetattr(self.fd, termios.TCSANOW, raw)
-        self.thread = threading.Thread(target=self._loop, name="teleop-twist-tty", daemon=True)
-        self.thread.start()
-
-    def _loop(self):
-        import os
-        while not self.teleop.quit_future.done():
-            data = os.read(self.fd, 1)
-            if data:
-                self.teleop.press(data.decode("latin-1"))
-
-    def close(self):
-        import termios
-        termios.tcsetattr(self.fd, termios.TCSANOW, self.cooked)
-
-
 def _open_terminal(teleop):
     try:
         from IPython import get_ipython
@@ -153,12 +124,9 @@ def _open_terminal(teleop):
             return None
     except ImportError:
         pass
-    try:
-        if sys.stdin is not None and sys.stdin.isatty():
-            return _TerminalKeys(teleop)
-    except (OSError, ValueError, ImportError):
-        pass
-    return None
+    from labkit.sims._tty import open_terminal_keys
+    return open_terminal_keys(teleop.press, teleop.quit_future.done, pass_ctrl_c=True,
+                              name="teleop-twist-tty")
 
 
 def main(args=None):
