@@ -295,18 +295,66 @@ def _quiet_first_layout():
             os.close(saved)
 
 
-def render_svg(view: ViewGraph, *, rankdir: str = "LR") -> str:
-    """The SVG document (UTF-8 text) of the laid out view."""
+# The book's text column is 720 CSS px wide; a figure wider than that is scaled
+# down, and its labels with it. A label must stay at least this many px tall.
+COLUMN_PX = 720.0
+MIN_LABEL_PX = 10.0
+
+
+def _empty_svg() -> str:
+    return (f'<?xml version="1.0" encoding="UTF-8" standalone="no"?>\n'
+            f'<svg xmlns="http://www.w3.org/2000/svg" width="120pt" height="40pt" '
+            f'viewBox="0 0 120 40" font-family={quoteattr(FONT_FAMILY)} class="labkit-rosgraph">\n'
+            f'<rect width="120" height="40" fill="white"/>\n{_text(60, 20, "(no nodes)", 12, "#777777")}\n</svg>\n')
+
+
+def _laid_out(view: ViewGraph, rankdir: str):
     g = to_agraph(view, rankdir=rankdir)
-    if not view.vertices:
-        return (f'<?xml version="1.0" encoding="UTF-8" standalone="no"?>\n'
-                f'<svg xmlns="http://www.w3.org/2000/svg" width="120pt" height="40pt" '
-                f'viewBox="0 0 120 40" font-family={quoteattr(FONT_FAMILY)} class="labkit-rosgraph">\n'
-                f'<rect width="120" height="40" fill="white"/>\n{_text(60, 20, "(no nodes)", 12, "#777777")}\n</svg>\n')
     with warnings.catch_warnings(), _quiet_first_layout():
         # "cell size too small": the fixed label cells are deliberate
         warnings.simplefilter("ignore")
         g.layout(prog="dot")
+    return g
+
+
+def label_px_in_column(width_pt: float, smallest_font: float) -> float:
+    """How tall (CSS px) the smallest label of a figure `width_pt` wide is in the column."""
+    width_px = width_pt * 4.0 / 3.0
+    return smallest_font * min(1.0, COLUMN_PX / width_px)
+
+
+def _smallest_font(view: ViewGraph) -> float:
+    sizes = [FONT_SIZE]
+    if view.clusters or any(v.cluster for v in view.vertices):
+        sizes.append(CLUSTER_FONT_SIZE)
+    if any(link.label for link in view.links):
+        sizes.append(EDGE_FONT_SIZE)
+    return min(sizes)
+
+
+def layout(view: ViewGraph, rankdir: str = "auto"):
+    """The laid out graph. rankdir "auto": rqt_graph's left-to-right, unless that
+    makes the figure so wide that its labels shrink below MIN_LABEL_PX in the
+    book's column; then top-to-bottom when that reads better."""
+    if rankdir != "auto":
+        return _laid_out(view, rankdir)
+    smallest = _smallest_font(view)
+    best, best_px = None, -1.0
+    for direction in ("LR", "TB"):
+        g = _laid_out(view, direction)
+        px = label_px_in_column(_Canvas(_floats(g.graph_attr["bb"])).width, smallest)
+        if px > best_px + 1e-9:
+            best, best_px = g, px
+        if px >= MIN_LABEL_PX:
+            break
+    return best
+
+
+def render_svg(view: ViewGraph, *, rankdir: str = "auto") -> str:
+    """The SVG document (UTF-8 text) of the laid out view."""
+    if not view.vertices:
+        return _empty_svg()
+    g = layout(view, rankdir)
     canvas = _Canvas(_floats(g.graph_attr["bb"]))
     w, h = canvas.width, canvas.height
     out = ['<?xml version="1.0" encoding="UTF-8" standalone="no"?>',

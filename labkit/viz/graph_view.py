@@ -152,7 +152,7 @@ class GraphView:
     def __init__(self, services: bool = False, actions: bool | str = False,
                  hide_debug: bool = True, *, hide_dead_sinks: bool = True,
                  hide_leaf_topics: bool = True, hide_tf: bool = False, group_tf: bool = True,
-                 cluster_level: int = 2, nodes_only: bool = False, rankdir: str = "LR",
+                 cluster_level: int = 2, nodes_only: bool = False, rankdir: str = "auto",
                  snapshot: GraphSnapshot | dict | None = None):
         self.options = ViewOptions(services=services, actions=actions, hide_debug=hide_debug,
                                    hide_dead_sinks=hide_dead_sinks,
