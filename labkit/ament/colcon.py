@@ -78,7 +78,7 @@ def _timestamp():
 # ------------------------------------------------------------------ parser
 
 def _parser():
-    from labkit.cli.ros2._base import Parser
+    from labkit.commands import Parser
     parser = Parser(prog='colcon', description='colcon is an extensible command line tool '
                     'to build and test multiple software packages.',
                     formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -141,8 +141,8 @@ def run_command(command):
     """Run one colcon command line (without the leading `colcon`)."""
     import shlex
 
-    from labkit.cli.ros2 import CompletedCommand, _Recorder
-    from labkit.cli.ros2._base import ParserExit, Streams, set_parse_streams
+    from labkit.commands import CompletedCommand, ParserExit, Streams, set_parse_streams
+    from labkit.commands import Recorder as _Recorder
     argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['colcon']:
         argv = argv[1:]

@@ -73,7 +73,7 @@ def package_keys(paths):
 # ------------------------------------------------------------------ command line
 
 def _parser():
-    from labkit.cli.ros2._base import Parser
+    from labkit.commands import Parser
     p = Parser(prog='rosdep', usage='rosdep [options] <command> <args>',
                description='Commands:\n\n'
                            'rosdep check <stacks-and-packages>...\n'
@@ -119,8 +119,8 @@ def run_command(command):
     """Run one rosdep command line (without `rosdep`); returns a CompletedCommand."""
     import shlex
 
-    from labkit.cli.ros2 import CompletedCommand, _Recorder
-    from labkit.cli.ros2._base import ParserExit, Streams, set_parse_streams
+    from labkit.commands import CompletedCommand, ParserExit, Streams, set_parse_streams
+    from labkit.commands import Recorder as _Recorder
     argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['rosdep']:
         argv = argv[1:]

@@ -14,12 +14,13 @@ parser default `_background=lambda args: bool` makes it a job when true.
 """
 import argparse
 import importlib
-import io
 import shlex
 import traceback
 
 from labkit.cli.ros2 import _base
 from labkit.cli.ros2._base import CliError, Parser, ParserExit, Streams
+# the command plumbing lives one floor down (tools use it too); kept importable from here
+from labkit.commands import CompletedCommand, Recorder as _Recorder
 
 __all__ = ['run_command', 'CompletedCommand', 'register_noun']
 
@@ -39,56 +40,6 @@ _NOUNS = {
 def register_noun(name, module, doc):
     """Add a `ros2 <name>` command: `module` defines add_arguments(parser, cli_name)."""
     _NOUNS[name] = (module, doc)
-
-
-class CompletedCommand:
-    """What a finished `ros2` command left behind (like subprocess.CompletedProcess)."""
-
-    def __init__(self, args, returncode, stdout='', stderr='', exception=None, chunks=None):
-        self.args = args
-        self.returncode = returncode
-        self.stdout = stdout
-        self.stderr = stderr
-        self.exception = exception  # an unexpected internal error, kept for debugging
-        # [(stream name, text)] in the order printed, so a terminal-like view interleaves them
-        self.chunks = chunks if chunks is not None else \
-            [c for c in (('stdout', stdout), ('stderr', stderr)) if c[1]]
-
-    def check_returncode(self):
-        if self.returncode:
-            import subprocess
-            raise subprocess.CalledProcessError(
-                self.returncode, self.args, self.stdout, self.stderr)
-
-    def text(self):
-        return ''.join(text for _, text in self.chunks)
-
-    def __str__(self):
-        return self.text()
-
-    def __repr__(self):
-        # a notebook shows the command's output, as a terminal would
-        return self.text().rstrip('\n')
-
-    def _repr_pretty_(self, p, cycle):
-        p.text(self.__repr__())
-
-
-class _Recorder(io.StringIO):
-    """One output stream of a command, also noting each write in the shared order."""
-
-    def __init__(self, name, chunks, echo=None):
-        super().__init__()
-        self.name = name
-        self.chunks = chunks
-        self.echo = echo
-
-    def write(self, text):
-        if text:
-            self.chunks.append((self.name, text))
-            if self.echo is not None:
-                self.echo(self.name, text)
-        return super().write(text)
 
 
 def split_command(command):

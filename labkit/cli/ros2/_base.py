@@ -6,85 +6,15 @@ returns None/0 (success), an int (exit code) or a str (one error line, exit 1).
 import argparse
 import copy
 import itertools
-import sys
-import threading
 
 import yaml
 
+# the command plumbing lives one floor down (labkit/commands.py), shared with the tools
+from labkit.commands import (CliError, Parser, ParserExit, Streams,  # noqa: F401
+                             add_verbs, set_parse_streams)
+
 HIDDEN_PREFIX = '_'
 NODE_NAME_PREFIX = '_ros2cli'
-
-
-class CliError(Exception):
-    """A user mistake: one line on stderr, exit code 1 (ros2cli raises RuntimeError)."""
-
-
-class ParserExit(Exception):
-    def __init__(self, status):
-        super().__init__(status)
-        self.status = status
-
-
-class Streams:
-    """Where a verb prints: captured text for short verbs, the process sink for jobs."""
-
-    def __init__(self, out, err):
-        self.out = out
-        self.err = err
-
-    def print(self, *values, sep=' ', end='\n'):
-        print(*values, sep=sep, end=end, file=self.out)
-
-    def eprint(self, *values, sep=' ', end='\n'):
-        print(*values, sep=sep, end=end, file=self.err)
-
-
-_parsing = threading.local()  # .streams: the Streams of the command this thread parses
-
-
-def set_parse_streams(streams):
-    _parsing.streams = streams
-
-
-class Parser(argparse.ArgumentParser):
-    """argparse that prints into the command's streams and never calls sys.exit."""
-
-    def _get_formatter(self):
-        # a notebook has no terminal: help is laid out for 80 columns, the same every run
-        return self.formatter_class(prog=self.prog, width=78)
-
-    def _print_message(self, message, file=None):
-        if not message:
-            return
-        streams = _parsing.streams
-        target = streams.err if (file is not None and file is not sys.stdout) else streams.out
-        target.write(message)
-
-    def exit(self, status=0, message=None):
-        if message:
-            self._print_message(message, sys.stderr)
-        raise ParserExit(status)
-
-
-def add_verbs(noun_parser, cli_name, verbs):
-    """Add one subparser per verb: `verbs` is [(name, help, add_arguments, main), ...]."""
-    description = ''
-    width = max(len(v[0]) for v in verbs)
-    for name, doc, _, _ in verbs:
-        description += f'{name.ljust(width)}  {doc}\n'
-    sub = noun_parser.add_subparsers(
-        title='Commands', description=description,
-        metavar=f'Call `{cli_name} <command> -h` for more detailed usage.',
-        parser_class=Parser)
-    sub.dest = ' verb'
-    sub.required = False
-    for name, doc, add_arguments, main in verbs:
-        p = sub.add_parser(name, description=doc,
-                           formatter_class=argparse.RawDescriptionHelpFormatter)
-        p.set_defaults(_verb=main)
-        if add_arguments is not None:
-            add_arguments(p)
-    return sub
 
 
 # --------------------------------------------------------------------------- names
