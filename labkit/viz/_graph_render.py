@@ -23,8 +23,8 @@ from labkit.viz._graph_filter import ViewGraph
 FONT_FAMILY = ("Noto Sans CJK SC, Source Han Sans SC, PingFang SC, Microsoft YaHei, "
                "WenQuanYi Micro Hei, DejaVu Sans, sans-serif")
 FONT_SIZE = 14.0
-CLUSTER_FONT_SIZE = 12.0
-EDGE_FONT_SIZE = 12.0
+CLUSTER_FONT_SIZE = 14.0   # as large as the vertices: the book scales wide figures down
+EDGE_FONT_SIZE = 14.0
 
 _STYLE = {
     # rqt_graph: nodes are ellipses, topics boxes, grouped topics box3d
@@ -89,6 +89,18 @@ def _cluster_text(key: str, kind: str) -> str:
     return key if kind == "namespace" else f"{key} (action)"
 
 
+def display_name(view: ViewGraph, v) -> str:
+    """The text drawn in a vertex: its ROS name, except inside an expanded
+    action's box, whose title already says the action's name: there the part
+    after it (`_action/feedback`), so the figure stays narrow enough to read.
+    The hover text always has the whole name."""
+    if v.cluster and view.clusters.get(v.cluster[-1]) == "action":
+        prefix = v.cluster[-1].rstrip("/") + "/"
+        if v.name.startswith(prefix):
+            return v.name[len(prefix):]
+    return v.name
+
+
 def to_agraph(view: ViewGraph, *, rankdir: str = "LR"):
     import pygraphviz as pgv
 
@@ -118,9 +130,10 @@ def to_agraph(view: ViewGraph, *, rankdir: str = "LR"):
     for cluster_path in sorted({v.cluster for v in view.vertices}):
         container(cluster_path)
     for v in view.vertices:
-        width, height = _vertex_size(v.kind, v.name)
+        label = display_name(view, v)
+        width, height = _vertex_size(v.kind, label)
         shape = "ellipse" if v.kind == "node" else "box"
-        container(v.cluster).add_node(v.id, label=v.name, shape=shape,
+        container(v.cluster).add_node(v.id, label=label, shape=shape,
                                       width=str(width), height=str(height))
     for link in view.links:
         # arrowheads at both ends make dot reserve room for them
@@ -396,7 +409,7 @@ def render_svg(view: ViewGraph, *, rankdir: str = "auto") -> str:
             stroke, css = "red", v.kind + " qos-incompatible"
             tip += "\n\n" + _qos_tooltip(v)
         out.append(f'<g class="vertex {css}"><title>{escape(tip)}</title>'
-                   f'{_shape(v.kind, cx, cy, vw, vh, stroke)}{_text(cx, cy, v.name, FONT_SIZE)}</g>')
+                   f'{_shape(v.kind, cx, cy, vw, vh, stroke)}{_text(cx, cy, display_name(view, v), FONT_SIZE)}</g>')
     out.append("</svg>")
     return "\n".join(out) + "\n"
 
