@@ -12,11 +12,16 @@ Verbs are written like ros2cli's: `main(args, io)` prints through `io`
 """
 import argparse
 import io
+import itertools
 import sys
 import threading
 
 __all__ = ['CompletedCommand', 'Recorder', 'Streams', 'CliError', 'ParserExit', 'Parser',
-           'set_parse_streams', 'add_verbs', 'emit']
+           'set_parse_streams', 'add_verbs', 'emit', 'CliNode', 'settle', 'is_hidden_name',
+           'get_message', 'get_action', 'expand_topic']
+
+HIDDEN_PREFIX = '_'
+NODE_NAME_PREFIX = '_ros2cli'
 
 
 class CompletedCommand:
@@ -165,3 +170,163 @@ def emit(result, target=None, mode='w'):
         stream = sys.stdout if name == 'stdout' else sys.stderr
         stream.write(text)
         stream.flush()
+
+
+# --------------------------------------------------------------------------- names
+
+def is_hidden_name(name):
+    return any(part.startswith(HIDDEN_PREFIX) for part in name.split('/'))
+
+
+def expand_topic(node, topic):
+    """A topic name as the node sees it ('chatter' -> '/chatter'); bad names: one CliError line."""
+    try:
+        from labkit.rclpy.expand_topic_name import expand_topic_name
+    except ImportError:
+        return topic if topic.startswith('/') else '/' + topic
+    try:
+        return expand_topic_name(topic, node.get_name(), node.get_namespace())
+    except Exception as e:  # rclpy's invalid-name exceptions: one line
+        raise CliError(str(e))
+
+
+# --------------------------------------------------------------------------- the command's own node
+
+_counter = itertools.count(1)
+
+
+def world():
+    from labkit.graph import world as w
+    return w
+
+
+def settle():
+    """Let every runnable thread finish its work (virtual time): graph queries see the news."""
+    try:
+        w = world()
+    except ImportError:
+        return
+    fn = getattr(w, 'settle', None)
+    if fn is not None:
+        fn()
+
+
+class CliNode:
+    """The hidden node a verb queries and talks through (ros2cli's DirectNode).
+
+    It lives in a Context of its own, so the user's `rclpy.init()` state is
+    never touched, and it is gone when the verb ends.
+    """
+
+    def __init__(self, name=None, *, suffix=None, default_context=False):
+        import labkit.rclpy as rclpy
+        from labkit.rclpy.context import Context
+        from labkit.rclpy.executors import SingleThreadedExecutor
+        self.rclpy = rclpy
+        if default_context:
+            # a background job: the job's process context, so stopping the job ends the verb
+            self.context = rclpy.get_default_context()
+            if not self.context.ok():
+                rclpy.init(args=[], context=self.context)
+        else:
+            self.context = Context()
+            rclpy.init(args=[], context=self.context)
+        if name is None:
+            name = f'{NODE_NAME_PREFIX}_{suffix or next(_counter)}'
+        # like ros2cli's DirectNode: rosout on, no parameter services
+        self.node = rclpy.create_node(name, context=self.context, start_parameter_services=False)
+        self.executor = SingleThreadedExecutor(context=self.context)
+        self.executor.add_node(self.node)
+        if not default_context:
+            # a job needs no settle: it starts while every other thread waits
+            settle()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def close(self):
+        try:
+            self.executor.shutdown()
+        except Exception:
+            pass
+        try:
+            self.node.destroy_node()
+        except Exception:
+            if self.context.ok():
+                raise
+        finally:
+            if self.context.ok():
+                self.context.try_shutdown()
+
+    def spin_until(self, future, timeout_sec=None):
+        self.executor.spin_until_future_complete(future, timeout_sec=timeout_sec)
+        return future
+
+    def spin_once(self, timeout_sec=None):
+        self.executor.spin_once(timeout_sec=timeout_sec)
+
+    def ok(self):
+        return self.context.ok()
+
+    def call(self, client, request, timeout_sec=None):
+        """call_async + spin until done; None on timeout."""
+        future = client.call_async(request)
+        self.spin_until(future, timeout_sec)
+        if not future.done():
+            client.remove_pending_request(future) if hasattr(
+                client, 'remove_pending_request') else None
+            return None
+        return future.result()
+
+    # rclpy.action's graph functions take the node: offer them as methods like DirectNode
+    def get_action_names_and_types(self):
+        from labkit.rclpy.action import get_action_names_and_types
+        return get_action_names_and_types(self.node)
+
+    def get_action_server_names_and_types_by_node(self, name, namespace):
+        from labkit.rclpy.action import get_action_server_names_and_types_by_node
+        return get_action_server_names_and_types_by_node(self.node, name, namespace)
+
+    def get_action_client_names_and_types_by_node(self, name, namespace):
+        from labkit.rclpy.action import get_action_client_names_and_types_by_node
+        return get_action_client_names_and_types_by_node(self.node, name, namespace)
+
+    def __getattr__(self, name):
+        return getattr(self.node, name)
+
+
+# --------------------------------------------------------------------------- interfaces
+
+def _interfaces():
+    import labkit.interfaces as ifc
+    return ifc
+
+
+def _get(identifier, default_kind):
+    """rosidl_runtime_py.utilities.get_* : 'pkg/Name' or 'pkg/kind/Name' -> class."""
+    parts = identifier.split('/')
+    if len(parts) == 2:
+        parts = [parts[0], default_kind, parts[1]]
+    if len(parts) != 3 or not all(parts):
+        raise ValueError(identifier)
+    try:
+        return _interfaces().get_type('/'.join(parts))
+    except LookupError as e:
+        raise ValueError(identifier) from e
+
+
+def get_message(identifier):
+    cls = _get(identifier, 'msg')
+    if not hasattr(cls, 'SLOT_TYPES') and not hasattr(cls, '__slots__'):
+        raise ValueError(identifier)
+    return cls
+
+
+def get_action(identifier):
+    cls = _get(identifier, 'action')
+    if not (hasattr(cls, 'Goal') and hasattr(cls, 'Result') and hasattr(cls, 'Feedback')):
+        raise ValueError(identifier)
+    return cls

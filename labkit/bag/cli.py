@@ -6,7 +6,7 @@ import argparse
 import datetime
 import os
 
-from labkit.cli.ros2._base import add_verbs
+from labkit.commands import add_verbs
 
 STORAGE_CHOICES = ['mcap', 'sqlite3']
 

@@ -1,5 +1,5 @@
 """rosbag2_transport's Player on the rclpy API: republish a bag with its recorded timing."""
-from labkit.cli.ros2._base import CliNode
+from labkit.commands import CliNode
 
 DEFAULT_DEPTH = 10
 
@@ -71,7 +71,7 @@ class Player:
         return 0
 
     def _publishers(self, node, reader, remap, log):
-        from labkit.cli.ros2._base import get_message
+        from labkit.commands import get_message
         wanted = set(self.args.topics or [])
         publishers = {}
         for topic in reader.topics():

@@ -5,7 +5,7 @@ the bag is then closed (last batch committed, metadata.yaml written).
 """
 import re
 
-from labkit.cli.ros2._base import CliNode, is_hidden_name
+from labkit.commands import CliNode, is_hidden_name
 
 DEFAULT_DEPTH = 10  # Rosbag2QoS: rmw_qos_profile_default's depth
 _INFINITE = (2147483647, 4294967295)
@@ -87,7 +87,7 @@ class Recorder:
 
     def _subscribe(self, node, name, type_name, infos):
         from labkit.bag.metadata import TopicMetadata
-        from labkit.cli.ros2._base import get_message
+        from labkit.commands import get_message
         try:
             cls = get_message(type_name)
         except ValueError:
@@ -113,7 +113,7 @@ class Recorder:
 
     def record(self):
         from labkit.bag.storage import BagWriter
-        from labkit.cli.ros2.topic import expand_topic
+        from labkit.commands import expand_topic
         a = self.args
         with CliNode('rosbag2_recorder', default_context=True) as node:
             log = node.get_logger()

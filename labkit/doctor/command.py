@@ -39,7 +39,7 @@ def _print_reports(io, reports):
 
 
 def main(args, io):
-    from labkit.cli.ros2._base import CliNode
+    from labkit.commands import CliNode
     with CliNode() as node:
         doctor = Doctor(node, io.eprint)
         if args.report:

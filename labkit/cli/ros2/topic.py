@@ -3,6 +3,7 @@ from labkit.cli.ros2._base import (
     CliError, CliNode, GaveUp, add_qos_arguments, add_verbs, configure_profile, convert,
     get_message, load_yaml_values, patience, preset_profile, topic_names_and_types,
     unsigned_int)
+from labkit.commands import expand_topic  # noqa: F401  (action.py imports it from here)
 
 DEFAULT_TRUNCATE_LENGTH = 128
 ECHO_DEFAULT_PROFILE = 'sensor_data'
@@ -135,17 +136,6 @@ def find(args, io):
 
 
 # --------------------------------------------------------------------------- message classes
-
-def expand_topic(node, topic):
-    try:
-        from labkit.rclpy.expand_topic_name import expand_topic_name
-    except ImportError:
-        return topic if topic.startswith('/') else '/' + topic
-    try:
-        return expand_topic_name(topic, node.get_name(), node.get_namespace())
-    except Exception as e:  # rclpy's invalid-name exceptions: one line
-        raise CliError(str(e))
-
 
 def lookup_message_class(node, topic):
     """The class of a published topic, or None (ros2topic.api._get_msg_class)."""
