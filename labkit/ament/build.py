@@ -122,6 +122,20 @@ def _common_install(ctx, with_manifest, with_marker):
 
 # ------------------------------------------------------------------ ament_python
 
+# What Jammy's setuptools 59.6 (python3-setuptools) prints on stderr each time colcon
+# runs `setup.py install` (or `setup.py develop` for --symlink-install): harmless, but
+# it makes colcon report "N packages had stderr output" on every Humble machine.
+_SETUPTOOLS = '/usr/lib/python3/dist-packages/setuptools/command/'
+_INSTALL_DEPRECATED = [
+    _SETUPTOOLS + 'install.py:34: SetuptoolsDeprecationWarning: setup.py install is '
+    'deprecated. Use build and pip and other standards-based tools.',
+    '  warnings.warn(']
+_EASY_INSTALL_DEPRECATED = [
+    _SETUPTOOLS + 'easy_install.py:158: EasyInstallDeprecationWarning: easy_install command '
+    'is deprecated. Use build and pip and other standards-based tools.',
+    '  warnings.warn(']
+
+
 def build_ament_python(ctx):
     res = BuildResult()
     pkg = ctx.pkg
@@ -170,6 +184,8 @@ def build_ament_python(ctx):
         tops.add(module)
         if not ctx.symlink:
             _place(src, os.path.join(site, module + '.py'), False)
+    # egg_info passed; the install (or develop) command starts and setuptools warns
+    res.stderr += (_EASY_INSTALL_DEPRECATED if ctx.symlink else []) + _INSTALL_DEPRECATED
     egg_name = name.replace('-', '_')
     if ctx.symlink:
         # `setup.py develop`: build/<pkg> mirrors the sources with links; an egg-link and

@@ -45,7 +45,9 @@ def test_build_source_run_call(facer_ws):
     from labkit.ament import source
     result = colcon.run_command('build')
     assert result.returncode == 0, result.stdout + result.stderr
-    assert result.stdout.splitlines()[-1].startswith('Summary: 4 packages finished')
+    assert result.stdout.splitlines()[-2].startswith('Summary: 4 packages finished')
+    assert result.stdout.splitlines()[-1] == \
+        '  3 packages had stderr output: facer_handle facer_input facer_output'
     assert (facer_ws / 'install/facer_input/share/facer_input/launch/'
             'python_parameters_launch.py').is_file()
     assert source.run('install/setup.bash') == 0

@@ -26,7 +26,7 @@ def test_type_not_in_dependencies_fails_in_rosidl(facer):
     # facer_input has no dependency on the interfaces: it was built before them
     assert tail.startswith('1 package finished')
     assert '  1 package failed: facer_interfaces' in tail
-    assert '  1 package had stderr output: facer_interfaces' in tail
+    assert '  2 packages had stderr output: facer_input facer_interfaces' in tail
     assert '  2 packages not processed' in tail
 
 
