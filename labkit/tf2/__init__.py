@@ -1,6 +1,6 @@
 """tf2 for labkit: tf2_ros (Buffer, listener, broadcasters), tf2_geometry_msgs,
 tf_transformations, and the executables tf2_ros static_transform_publisher /
-tf2_echo, tf2_tools view_frames and the turtle_tf2_py demo nodes.
+tf2_echo, tf2_tools view_frames and labkit's turtle_tf2_demo nodes.
 
 `register()` (called by labkit.plugins) only records names: nothing heavy is imported.
 `snapshot(buffer)` gives the viewers every frame as a 4x4 matrix in one fixed frame.
@@ -18,13 +18,10 @@ EXECUTABLES = {
     ("tf2_ros", "static_transform_publisher"): "labkit.tf2.static_transform_publisher:main",
     ("tf2_ros", "tf2_echo"): "labkit.tf2.tf2_echo:main",
     ("tf2_tools", "view_frames"): "labkit.tf2.view_frames:main",
-    ("turtle_tf2_py", "turtle_tf2_broadcaster"): "labkit.tf2.turtle_tf2.broadcaster:main",
-    ("turtle_tf2_py", "turtle_tf2_listener"): "labkit.tf2.turtle_tf2.listener:main",
-    ("turtle_tf2_py", "fixed_frame_tf2_broadcaster"): "labkit.tf2.turtle_tf2.fixed_frame:main",
-    ("turtle_tf2_py", "dynamic_frame_tf2_broadcaster"):
-        "labkit.tf2.turtle_tf2.dynamic_frame:main",
-    ("turtle_tf2_py", "static_turtle_tf2_broadcaster"):
-        "labkit.tf2.turtle_tf2.static_broadcaster:main",
+    # labkit's own demo package (chapter 22); the official one is turtle_tf2_py
+    ("turtle_tf2_demo", "pose_to_tf"): "labkit.tf2.turtle_demo.pose_to_tf:main",
+    ("turtle_tf2_demo", "chaser"): "labkit.tf2.turtle_demo.chaser:main",
+    ("turtle_tf2_demo", "carrot"): "labkit.tf2.turtle_demo.carrot:main",
 }
 
 

@@ -1,4 +1,4 @@
-"""The turtle_tf2_py demo: turtle2 chases turtle1 through TF (virtual time)."""
+"""labkit's turtle_tf2_demo package: turtle2 chases a frame through TF (virtual time)."""
 import math
 
 import pytest
@@ -19,12 +19,11 @@ def run(*argv):
 
 def start_demo(target="turtle1"):
     run("turtlesim", "turtlesim_node")
-    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-r", "__node:=broadcaster1",
-        "-p", "turtlename:=turtle1")
-    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-r", "__node:=broadcaster2",
-        "-p", "turtlename:=turtle2")
-    return run("turtle_tf2_py", "turtle_tf2_listener", "--ros-args", "-r", "__node:=listener",
-               "-p", f"target_frame:={target}")
+    run("turtle_tf2_demo", "pose_to_tf", "--ros-args", "-r", "__node:=turtle1_tf",
+        "-p", "turtle:=turtle1")
+    run("turtle_tf2_demo", "pose_to_tf", "--ros-args", "-r", "__node:=turtle2_tf",
+        "-p", "turtle:=turtle2")
+    return run("turtle_tf2_demo", "chaser", "--ros-args", "-p", f"target:={target}")
 
 
 class Watcher:
@@ -50,11 +49,9 @@ class Watcher:
 
 
 def test_turtle2_follows_turtle1():
-    listener = start_demo()
+    start_demo()
     w = Watcher()
-    w.spin_for(3.0)
-    out = "\n".join(listener.output)
-    assert "Successfully spawned turtle2" in out
+    w.spin_for(0.5)
     assert "turtle2" in w.poses
     start = w.distance()
     assert start > 3.0                       # spawned at (4, 2), turtle1 at the centre
@@ -78,8 +75,8 @@ def test_turtle2_follows_turtle1():
 
 def test_carrot_frames():
     run("turtlesim", "turtlesim_node")
-    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-p", "turtlename:=turtle1")
-    run("turtle_tf2_py", "fixed_frame_tf2_broadcaster")
+    run("turtle_tf2_demo", "pose_to_tf")
+    run("turtle_tf2_demo", "carrot")
     w = Watcher()
     w.spin_for(1.0)
     t = w.buffer.lookup_transform("world", "carrot1", Time())
@@ -89,10 +86,32 @@ def test_carrot_frames():
         (p.x, p.y + 2.0))
     labkit.reset()
     run("turtlesim", "turtlesim_node")
-    run("turtle_tf2_py", "turtle_tf2_broadcaster", "--ros-args", "-p", "turtlename:=turtle1")
-    run("turtle_tf2_py", "dynamic_frame_tf2_broadcaster")
+    run("turtle_tf2_demo", "pose_to_tf")
+    run("turtle_tf2_demo", "carrot", "--ros-args", "-p", "radius:=3.0")
     w = Watcher()
     w.spin_for(1.0)
     t = w.buffer.lookup_transform("turtle1", "carrot1", Time())
     assert math.hypot(t.transform.translation.x, t.transform.translation.y) == \
-        pytest.approx(10.0)
+        pytest.approx(3.0)
+    w.spin_for(1.0)         # it circles: 0.5 rad/s by default
+    later = w.buffer.lookup_transform("turtle1", "carrot1", Time())
+    turned = math.atan2(later.transform.translation.y, later.transform.translation.x) - \
+        math.atan2(t.transform.translation.y, t.transform.translation.x)
+    assert turned == pytest.approx(0.5, abs=0.06)
+    labkit.reset()
+
+
+def test_chase_carrot_launch_file():
+    job = labkit.ros2("launch turtle_tf2_demo chase_carrot.launch.py orbit:=true")
+    w = Watcher()
+    w.spin_for(2.0)
+    assert sorted(labkit.ros2("node list").stdout.split()) == [
+        "/carrot", "/chaser", "/sim", "/turtle1_tf", "/turtle2_tf", "/watcher"]
+    assert labkit.ros2("param get /chaser target").stdout.strip() == "String value is: carrot1"
+    assert labkit.ros2("param get /carrot radius").stdout.strip() == "Double value is: 2.0"
+    t = w.buffer.lookup_transform("world", "carrot1", Time())
+    start = math.hypot(t.transform.translation.x - 4.0, t.transform.translation.y - 2.0)
+    w.spin_for(12.0)
+    turtle2 = w.buffer.lookup_transform("carrot1", "turtle2", Time()).transform.translation
+    assert math.hypot(turtle2.x, turtle2.y) < 0.5 * start     # turtle2 caught up with it
+    job.stop()
