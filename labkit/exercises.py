@@ -127,6 +127,53 @@ class Checker:
                          f"{path} 里没有 {contains!r}")
 
 
+    # -- traffic ------------------------------------------------------------
+    def logs(self, node_name: str, seconds: float = 2.0, *, at_least: int = 1,
+             contains: str | None = None) -> list:
+        """A node writes log lines to /rosout while the graph runs `seconds`."""
+        lines = logs(node_name, seconds)
+        wanted = [m for m in lines if contains is None or contains in m.msg]
+        what = f"包含 {contains!r} 的日志" if contains else "日志"
+        self.that(len(wanted) >= at_least,
+                  f"{seconds:g} 秒里 {node_name} 输出了 {len(wanted)} 条{what}",
+                  f"{seconds:g} 秒里 {node_name} 只输出了 {len(wanted)} 条{what}，至少应该有 {at_least} 条")
+        return wanted
+
+
+def collect(topic: str, type_name: str, seconds: float = 1.0, qos=10) -> list:
+    """The messages that arrive on `topic` while the graph runs for `seconds`."""
+    import labkit.rclpy as rclpy
+    from labkit.interfaces import get_type
+    from labkit.rclpy.duration import Duration
+
+    node = _graph_node()
+    got = []
+    sub = node.create_subscription(get_type(type_name), topic, got.append, qos)
+    try:
+        end = node.get_clock().now() + Duration(seconds=seconds)
+        while node.get_clock().now() < end:
+            rclpy.spin_once(node, timeout_sec=0.05)
+    finally:
+        node.destroy_subscription(sub)
+    return got
+
+
+def logs(node_name: str, seconds: float = 2.0) -> list:
+    """The /rosout log messages (rcl_interfaces/msg/Log) a node writes during `seconds`."""
+    logger = node_name.lstrip("/").replace("/", ".")
+    return [m for m in collect("/rosout", "rcl_interfaces/msg/Log", seconds) if m.name == logger]
+
+
+def turtle_pose(turtle: str = "turtle1"):
+    """The turtle's latest pose as a dict (x, y, theta, ...), or None if nothing publishes it."""
+    poses = collect(f"/{turtle}/pose", "turtlesim/msg/Pose", 0.1)
+    if not poses:
+        return None
+    p = poses[-1]
+    return {"x": p.x, "y": p.y, "theta": p.theta,
+            "linear_velocity": p.linear_velocity, "angular_velocity": p.angular_velocity}
+
+
 def _node_names() -> set[str]:
     node = _graph_node()
     out = set()
