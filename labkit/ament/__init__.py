@@ -19,8 +19,8 @@ from labkit.ament.index import package_names, package_prefix  # noqa: E402,F401
 def register():
     """labkit.plugins hook: the `ament_index_python` import name and the magics."""
     from labkit import compat
-    from labkit.cli import magics
+    from labkit.plugins import register_magic
     compat.register_alias('ament_index_python', 'labkit.ament.ament_index_python')
     from labkit.ament import magics as ament_magics
     for name, fn in ament_magics.MAGICS.items():
-        magics.register(name, fn)
+        register_magic(name, fn)

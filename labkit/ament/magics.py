@@ -3,7 +3,7 @@ import sys
 
 
 def _emit(result):
-    from labkit.cli.magics import emit
+    from labkit.commands import emit
     emit(result)
 
 

@@ -10,6 +10,6 @@ rosbag2_py (the Python API), recorder/player (the transport), cli (the verbs).
 def register():
     """Called once by labkit.plugins: the `ros2 bag` noun and `import rosbag2_py`."""
     from labkit import compat
-    from labkit.cli.ros2 import register_noun
+    from labkit.plugins import register_noun
     register_noun('bag', 'labkit.bag.cli', 'Various rosbag related sub-commands')
     compat.register_alias('rosbag2_py', 'labkit.bag.rosbag2_py')

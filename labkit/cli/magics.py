@@ -7,14 +7,13 @@ then stderr, never a traceback; `> file` and `>> file` redirect stdout.
 import shlex
 import sys
 
-MAGICS = {}  # magic name -> function(line) ; later layers add theirs with register()
+from labkit import plugins
+from labkit.commands import emit  # the plumbing lives one floor down (kept importable here)
 
-
-def register(name, function):
-    """Add (or replace) a line magic; registered at once if IPython already loaded labkit."""
-    MAGICS[name] = function
-    if _loaded_into is not None:
-        _register_one(_loaded_into, name, function)
+# magic name -> function(line): the registry in labkit.plugins, where later layers add
+# theirs (plugins.register_magic) without importing the CLI
+MAGICS = plugins.MAGICS
+register = plugins.register_magic
 
 
 def split_redirect(line):
@@ -32,32 +31,6 @@ def split_redirect(line):
             tokens = tokens[:i] + tokens[i + 2:]
             break
     return tokens, target, mode
-
-
-def emit(result, target=None, mode='w'):
-    """Print a finished command as a terminal would: in the order it printed.
-
-    With `target`, stdout goes to that file (`>` / `>>`) and only stderr is shown.
-    """
-    chunks = getattr(result, 'chunks', None)
-    if chunks is None:
-        chunks = [('stdout', result.stdout), ('stderr', result.stderr)]
-    merged = []  # one write per run of the same stream keeps stored notebooks small
-    for name, text in chunks:
-        if merged and merged[-1][0] == name:
-            merged[-1] = (name, merged[-1][1] + text)
-        elif text:
-            merged.append((name, text))
-    chunks = merged
-    if target is not None:
-        with open(target, mode) as f:
-            f.write(''.join(text for name, text in chunks if name == 'stdout'))
-    for name, text in chunks:
-        if name == 'stdout' and target is not None:
-            continue
-        stream = sys.stdout if name == 'stdout' else sys.stderr
-        stream.write(text)
-        stream.flush()
 
 
 def ros2_magic(line):
@@ -116,6 +89,15 @@ MAGICS['ros2'] = ros2_magic
 _loaded_into = None
 
 
+def _late_magic(name, function):
+    """A magic registered after `%load_ext labkit`: IPython gets it at once."""
+    if _loaded_into is not None:
+        _register_one(_loaded_into, name, function)
+
+
+plugins.on_magic(_late_magic)
+
+
 def _register_one(ipython, name, function):
     from IPython.core.magic import no_var_expand
 
@@ -139,3 +121,12 @@ def load_ipython_extension(ipython):
 def unload_ipython_extension(ipython):
     global _loaded_into
     _loaded_into = None
+
+
+def _late_magic(name, function):
+    """A magic registered after `%load_ext labkit`: IPython gets it at once."""
+    if _loaded_into is not None:
+        _register_one(_loaded_into, name, function)
+
+
+plugins.on_magic(_late_magic)

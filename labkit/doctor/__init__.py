@@ -9,7 +9,7 @@ packets, emulating Humble on whatever OS and Python run it.
 def register():
     """The plugins hook: the `doctor` noun (and its alias `wtf`), the rqt_console executable."""
     from labkit import executables
-    from labkit.cli.ros2 import register_noun
+    from labkit.plugins import register_noun
     register_noun('doctor', 'labkit.doctor.command', 'Check ROS setup and other potential issues')
     register_noun('wtf', 'labkit.doctor.command', 'Use `wtf` as alias to `doctor`')
     executables.register('rqt_console', 'rqt_console', 'labkit.viz.console:main')

@@ -24,7 +24,7 @@ from labkit.launch.utilities import perform_substitutions  # noqa: F401
 def register():
     """labkit.plugins hook: `import launch` / `import launch_ros`, and `ros2 launch`."""
     from labkit import compat
-    from labkit.cli.ros2 import register_noun
+    from labkit.plugins import register_noun
     compat.register_alias('launch', 'labkit.launch')
     compat.register_alias('launch_ros', 'labkit.launch_ros')
     register_noun('launch', 'labkit.launch.cli', 'Run a launch file')

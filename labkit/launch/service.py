@@ -363,7 +363,8 @@ class LaunchService:
 
 def _ros2_verb_main(args=None):
     """A `ros2 <verb> ...` command as a launched process: its lines as it prints them."""
-    from labkit.cli.ros2 import run_command
+    from labkit.plugins import entry
+    run_command = entry('ros2')      # the ros2 program, found by name as on a PATH
 
     def echo(stream, text):
         (sys.stdout if stream == 'stdout' else sys.stderr).write(text)

@@ -8,7 +8,7 @@ start a background job and return its `Job` at once (see jobs.py).
 Adding a noun (later layers: bag, launch, doctor, ...): a module with
 `add_arguments(parser, cli_name)` that calls `_base.add_verbs(parser, cli_name,
 [(verb, one-line doc, add_arguments(p), main(args, io)), ...])`, registered
-with `register_noun(name, 'module.path', doc)`. A verb prints through
+with `labkit.plugins.register_noun(name, 'module.path', doc)`. A verb prints through
 `io.print`/`io.eprint` and returns None, an exit code, or an error line; a
 parser default `_background=lambda args: bool` makes it a job when true.
 """
@@ -17,6 +17,7 @@ import importlib
 import shlex
 import traceback
 
+from labkit import plugins
 from labkit.cli.ros2 import _base
 from labkit.cli.ros2._base import CliError, Parser, ParserExit, Streams
 # the command plumbing lives one floor down (tools use it too); kept importable from here
@@ -24,8 +25,10 @@ from labkit.commands import CompletedCommand, Recorder as _Recorder
 
 __all__ = ['run_command', 'CompletedCommand', 'register_noun']
 
-# noun -> (module path, one-line doc). Later layers register theirs (bag, launch, ...).
-_NOUNS = {
+# noun -> (module path, one-line doc): the registry in labkit.plugins, where later layers
+# (bag, launch, ...) register theirs without importing the CLI.
+_NOUNS = plugins.NOUNS
+_NOUNS.update({
     'action': ('labkit.cli.ros2.action', 'Various action related sub-commands'),
     'interface': ('labkit.cli.ros2.interface', 'Show information about ROS interfaces'),
     'node': ('labkit.cli.ros2.node', 'Various node related sub-commands'),
@@ -34,12 +37,8 @@ _NOUNS = {
     'run': ('labkit.cli.ros2.run', 'Run a package specific executable'),
     'service': ('labkit.cli.ros2.service', 'Various service related sub-commands'),
     'topic': ('labkit.cli.ros2.topic', 'Various topic related sub-commands'),
-}
-
-
-def register_noun(name, module, doc):
-    """Add a `ros2 <name>` command: `module` defines add_arguments(parser, cli_name)."""
-    _NOUNS[name] = (module, doc)
+})
+register_noun = plugins.register_noun
 
 
 def split_command(command):
@@ -83,7 +82,6 @@ def run_command(command, echo=None):
     `echo(stream_name, text)`, if given, sees every write as it happens (the %ros2
     magic prints through it, so a command's lines and the lines of the nodes it
     talks to appear in the order they happened, as in side-by-side terminals)."""
-    from labkit import plugins
     plugins.register_all()
     try:
         argv = split_command(command)

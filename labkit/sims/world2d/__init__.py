@@ -23,11 +23,8 @@ def register():
     from labkit import executables
     for (package, executable), target in EXECUTABLES.items():
         executables.register(package, executable, target)
-    try:
-        from labkit.cli import magics
-    except ImportError:          # the CLI layer is optional for the simulator itself
-        return
-    magics.register("ign", _ign_magic)
+    from labkit.plugins import register_magic
+    register_magic("ign", _ign_magic)
 
 
 def _ign_magic(line):

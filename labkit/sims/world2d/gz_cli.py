@@ -87,7 +87,7 @@ def ign_magic(line):
     """%ign gazebo -v 4 -r visualize_lidar.sdf | %ign topic -l"""
     result = run(line)
     if result is not None and hasattr(result, "stdout") and not hasattr(result, "process"):
-        from labkit.cli.magics import emit      # a start that failed at once: show its output
+        from labkit.commands import emit      # a start that failed at once: show its output
         emit(result)
 
 
@@ -109,7 +109,8 @@ def run(line):
 
 def start_gazebo(argv):
     """Start `ign gazebo ...` as a background job (`%ros2 jobs` lists it)."""
-    from labkit.cli.ros2 import jobs
+    from labkit.plugins import entry
+    jobs = entry("ros2 jobs")      # the CLI's background jobs, found by name
     command = "ign " + " ".join(shlex.quote(a) for a in argv)
     return jobs.start(argv, command, lambda sink: jobs.start_process(
         argv, "ign_gazebo", target=lambda args=None: gazebo_main(["ign", *argv]), sink=sink))
