@@ -54,6 +54,12 @@ def reset():
     """Stop every process and background job, shut every context down, clear the graph."""
     from labkit import process
     process.reset_all()
+    from labkit.rclpy import utilities as _rclpy_utilities
+    _rclpy_utilities.forget_after_reset()   # a later rclpy.shutdown() in the notebook is fine
+    import sys
+    meshcat_view = sys.modules.get('labkit.viz.meshcat_view')
+    if meshcat_view is not None:   # the 3D viewer's live parts (views following /tf)
+        meshcat_view.stop_all()
     try:  # live graph views and consoles hold nodes of their own
         from labkit.viz import graph_view
         graph_view.stop_all()

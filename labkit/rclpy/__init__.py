@@ -25,7 +25,9 @@ __all__ = ['init', 'shutdown', 'try_shutdown', 'ok', 'create_node', 'spin', 'spi
 
 def init(*, args=None, context=None, domain_id=None, signal_handler_options=None):
     """Initialize ROS communications for a given context (the process's default one)."""
-    context = get_default_context() if context is None else context
+    if context is None:
+        context = get_default_context()
+        _state().reset_by_labkit = False
     context.init(args, domain_id=domain_id)
 
 

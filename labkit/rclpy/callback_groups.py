@@ -62,3 +62,7 @@ class MutuallyExclusiveCallbackGroup(CallbackGroup):
             self._busy.release()
         except RuntimeError:
             pass
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

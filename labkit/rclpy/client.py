@@ -138,3 +138,7 @@ class Client(ReadyEntity):
         if not self._destroyed:
             self._destroyed = True
             GRAPH.remove(self._endpoint)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -165,3 +165,7 @@ class ROSClock(Clock):
         if self._ros_time_is_active:
             self._jump(ClockChange.ROS_TIME_NO_CHANGE, time.nanoseconds - before)
         world.notify()
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -12,3 +12,6 @@ class ClockType(IntEnum):
     # rclpy's ClockType is a pybind11 enum: str() is 'ClockType.ROS_TIME'
     def __str__(self):
         return f'ClockType.{self.name}'
+
+
+ClockType.__module__ = 'rclpy.clock'      # Humble defines it in rclpy/clock.py

@@ -137,3 +137,7 @@ class Context:
     @property
     def arguments(self):
         return self._arguments
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

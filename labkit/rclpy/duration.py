@@ -73,3 +73,7 @@ class Duration:
 
 
 Infinite = Duration(nanoseconds=RMW_DURATION_INFINITE)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -112,5 +112,9 @@ class InvalidHandleError(InvalidHandle):
     pass
 
 
-for _cls in (RCLError, UnknownROSArgsError):
+for _cls in (InvalidHandle, RCLError, UnknownROSArgsError):
     _cls.__module__ = 'rclpy._rclpy_pybind11'
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -9,6 +9,7 @@ from labkit.graph import world
 from labkit.rclpy import _wait
 from labkit.rclpy._entity import ENTITY_GEN
 from labkit.rclpy.clock import Clock, ClockType
+from labkit.rclpy.guard_condition import enter_context_handle
 from labkit.rclpy.subscription import _NOTHING
 from labkit.rclpy.task import Future, Task  # noqa: F401
 from labkit.rclpy.utilities import get_default_context
@@ -68,6 +69,8 @@ class Executor:
     def __init__(self, *, context=None):
         super().__init__()
         self._context = get_default_context() if context is None else context
+        with enter_context_handle(self._context):     # rclpy makes its guard condition here
+            pass
         self._nodes = {}                 # insertion-ordered set
         self._nodes_lock = threading.RLock()
         self._tasks = []                 # (Task, entity, node)
@@ -374,7 +377,9 @@ class Executor:
         if callback is not None and _is_coroutine_function(entity, callback):
             return self._run_coroutine(entity, self._callback_coro(entity, callback, args, work))
         try:
-            if callback is not None:
+            # a Rate's timer has no callback; a subscription or service without one fails
+            # here, as in rclpy ("'NoneType' object is not callable")
+            if callback is not None or kind != 'timer':
                 result = callback(*args)
                 if kind == 'service':
                     entity.send_response(result, arg[1])
@@ -533,3 +538,7 @@ class MultiThreadedExecutor(Executor):
         self._pool_stop = True
         world.notify()
         return ok
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -1,4 +1,14 @@
+import contextlib
+
 from labkit.rclpy._entity import Handle, ReadyEntity
+
+
+def enter_context_handle(context):
+    """rclpy's `with context.handle:` before making a C object: a context that was never
+    initialised (e.g. the new default context after rclpy.shutdown()) has no handle, and
+    Python itself refuses `with None`."""
+    handle = context.handle
+    return contextlib.nullcontext() if handle is not None else handle
 
 
 class GuardCondition(ReadyEntity):
@@ -7,6 +17,8 @@ class GuardCondition(ReadyEntity):
     def __init__(self, callback, callback_group, context=None):
         from labkit.rclpy.utilities import get_default_context
         self._context = get_default_context() if context is None else context
+        with enter_context_handle(self._context):
+            pass
         self.callback = callback
         self.callback_group = callback_group
         self._executor_event = False
@@ -43,3 +55,7 @@ class GuardCondition(ReadyEntity):
 
     def _destroy(self):
         self._destroyed = True
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

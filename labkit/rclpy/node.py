@@ -646,3 +646,7 @@ def _discovered_qos(qos):
 
 def _bump_timers():
     _entity_bump()
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -158,3 +158,7 @@ def parameter_value_to_python(parameter_value):
         return None
     value = getattr(parameter_value, field)
     return list(value) if t >= Parameter.Type.BYTE_ARRAY.value else value
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

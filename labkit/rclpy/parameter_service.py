@@ -161,3 +161,7 @@ class ParameterService:
                       if _speaks_rclcpp(node) else str(e))
             response.result = _rcl('msg/SetParametersResult')(successful=False, reason=reason)
         return response
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -299,3 +299,7 @@ def check_compatible(pub, sub):
 def qos_check_compatible(publisher_qos, subscription_qos):
     compatibility, reason, _ = check_compatible(publisher_qos, subscription_qos)
     return compatibility, reason
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -18,21 +18,39 @@ class QoSSubscriptionEventType(IntEnum):
     RCL_SUBSCRIPTION_MESSAGE_LOST = 3
 
 
-class QoSIncompatibleQoSInfo:
-    """rmw_{offered,requested}_qos_incompatible_event_status_t."""
+class rmw_qos_policy_kind_t(IntEnum):
+    """The policy kind an incompatible-QoS event carries: rclpy hands over the rmw enum
+    (`.name` is 'RMW_QOS_POLICY_RELIABILITY'); `QoSPolicyKind(kind)` converts it."""
+
+    RMW_QOS_POLICY_INVALID = 1 << 0
+    RMW_QOS_POLICY_DURABILITY = 1 << 1
+    RMW_QOS_POLICY_DEADLINE = 1 << 2
+    RMW_QOS_POLICY_LIVELINESS = 1 << 3
+    RMW_QOS_POLICY_RELIABILITY = 1 << 4
+    RMW_QOS_POLICY_HISTORY = 1 << 5
+    RMW_QOS_POLICY_LIFESPAN = 1 << 6
+    RMW_QOS_POLICY_DEPTH = 1 << 7
+    RMW_QOS_POLICY_LIVELINESS_LEASE_DURATION = 1 << 8
+    RMW_QOS_POLICY_AVOID_ROS_NAMESPACE_CONVENTIONS = 1 << 9
+
+    def __str__(self):            # a pybind11 enum prints as Type.NAME
+        return f'{type(self).__name__}.{self.name}'
+
+
+class rmw_requested_qos_incompatible_event_status_t:
+    """rmw_{offered,requested}_qos_incompatible_event_status_t (one class in rclpy)."""
 
     def __init__(self, total_count, total_count_change, last_policy_kind):
         self.total_count = total_count
         self.total_count_change = total_count_change
-        self.last_policy_kind = last_policy_kind
-
-    def __repr__(self):
-        return (f'QoSIncompatibleQoSInfo(total_count={self.total_count}, total_count_change='
-                f'{self.total_count_change}, last_policy_kind={self.last_policy_kind!r})')
+        self.last_policy_kind = rmw_qos_policy_kind_t(int(last_policy_kind))
 
 
-QoSOfferedIncompatibleQoSInfo = QoSIncompatibleQoSInfo
-QoSRequestedIncompatibleQoSInfo = QoSIncompatibleQoSInfo
+for _cls in (rmw_qos_policy_kind_t, rmw_requested_qos_incompatible_event_status_t):
+    _cls.__module__ = 'rclpy._rclpy_pybind11'
+
+QoSRequestedIncompatibleQoSInfo = rmw_requested_qos_incompatible_event_status_t
+QoSOfferedIncompatibleQoSInfo = QoSRequestedIncompatibleQoSInfo
 
 
 class SubscriptionEventCallbacks:
@@ -70,10 +88,8 @@ class QoSEventHandler(ReadyEntity):
         self._executor_event = False
 
     def occurred(self, other, policy_kind):
-        from labkit.rclpy.qos import QoSPolicyKind
         self._total += 1
-        self._events.append(QoSIncompatibleQoSInfo(self._total, 1,
-                                                   QoSPolicyKind(policy_kind or 1)))
+        self._events.append(QoSRequestedIncompatibleQoSInfo(self._total, 1, policy_kind or 1))
         self._signal()
 
     def _has_work(self):
@@ -96,8 +112,9 @@ class QoSEventHandler(ReadyEntity):
             return
         if callbacks is not None and not getattr(callbacks, 'use_default_callbacks', True):
             return
+        from labkit.rclpy.qos import qos_policy_name_from_kind
         logger = self._node.get_logger()
-        policy = info.last_policy_kind.name
+        policy = qos_policy_name_from_kind(info.last_policy_kind)
         topic = self._entity.topic
         if self._is_publisher:
             logger.warn(f"New subscription discovered on topic '{topic}', requesting "
@@ -107,3 +124,7 @@ class QoSEventHandler(ReadyEntity):
             logger.warn(f"New publisher discovered on topic '{topic}', offering incompatible "
                         'QoS. No messages will be received from it. '
                         f'Last incompatible policy: {policy}')
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -36,3 +36,7 @@ class QoSOverridingOptions:
     @classmethod
     def with_default_policies(cls, *, callback=None, entity_id=None):
         return cls(policy_kinds=(), callback=callback, entity_id=entity_id)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -92,3 +92,7 @@ class Service(ReadyEntity):
 
 
 _sequence = itertools.count(1)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

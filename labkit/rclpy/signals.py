@@ -19,3 +19,7 @@ def get_current_signal_handlers_options():
 
 def uninstall_signal_handlers():
     pass
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -57,7 +57,8 @@ class Subscription(ReadyEntity):
 
     @property
     def topic_name(self):
-        return self._endpoint.name
+        with self._handle:
+            return self._endpoint.name
 
     def destroy(self):
         if self._node is not None:
@@ -77,3 +78,7 @@ class _Nothing:
 
 
 _NOTHING = _Nothing()
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -169,3 +169,7 @@ class Task(Future):
 
     def executing(self):
         return self._executing
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

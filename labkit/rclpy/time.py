@@ -112,3 +112,7 @@ class Time:
         if type(msg).__name__ != 'Time' or not hasattr(msg, 'nanosec'):
             raise TypeError('Must pass a builtin_interfaces.msg.Time object')
         return cls(seconds=msg.sec, nanoseconds=msg.nanosec, clock_type=clock_type)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -113,3 +113,7 @@ class TimeSource:
         if self._node_weak_ref is not None:
             return self._node_weak_ref()
         return None
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

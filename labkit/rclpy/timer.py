@@ -9,6 +9,10 @@ class Timer:
     def __init__(self, callback, callback_group, timer_period_ns, clock, *, context=None):
         from labkit.rclpy.utilities import get_default_context
         self._context = get_default_context() if context is None else context
+        if int(timer_period_ns) < 0:       # rcl_timer_init refuses it (rcl/src/rcl/timer.c)
+            from labkit.rclpy.exceptions import RCLError
+            raise RCLError('failed to create timer: timer period must be non-negative, '
+                           'at ./src/rcl/timer.c:139')
         self._clock = clock
         self.callback = callback
         self.callback_group = callback_group
@@ -151,3 +155,7 @@ class Rate:
             _wait.wait(lambda: self._event)
         finally:
             self._postsleep()
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

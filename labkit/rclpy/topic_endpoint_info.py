@@ -114,3 +114,7 @@ class TopicEndpointInfo:
             f'  Liveliness: {qos.liveliness.name}',
             f'  Liveliness lease duration: {qos.liveliness_lease_duration}',
         ])
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -42,8 +42,20 @@ def ok(*, context=None):
 
 def shutdown(*, context=None):
     if context is None:
+        with g_context_lock:
+            state = _state()
+            if state.default_context is None and getattr(state, 'reset_by_labkit', False):
+                # labkit.reset() already shut the default context down: the notebook's own
+                # `rclpy.shutdown()` in a later cell has nothing left to do
+                state.reset_by_labkit = False
+                return None
         context = get_default_context(shutting_down=True)
     return context.shutdown()
+
+
+def forget_after_reset():
+    """labkit.reset() shut the calling process's default context down (see shutdown())."""
+    _state().reset_by_labkit = True
 
 
 def try_shutdown(*, context=None):

@@ -72,3 +72,7 @@ class Waitable:
 
     def destroy(self):
         pass
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -23,6 +23,7 @@ import os
 import re
 import struct
 import threading
+import weakref
 
 import numpy as np
 
@@ -477,6 +478,14 @@ def r2d2_walk(seconds=12.0, fps=10):
 
 # ---------------------------------------------------------------- live parts
 _views = []
+_live = weakref.WeakSet()         # views with live parts (a follower process, a live widget)
+
+
+def stop_all():
+    """labkit.reset(): every view stops following and tells its live pages to stop."""
+    for view in list(_live):
+        view.stop()
+    _views.clear()
 
 
 def current():

@@ -90,7 +90,7 @@ def test_exec_an_rclpy_program_in_live_time(tmp_path):
             pub.publish(String(data=f'm{i}'))
         while len(got) < 3:
             rclpy.spin_once(node, timeout_sec=1.0)
-        print(got, type(node).__module__)
+        print(got, type(node).__init__.__module__)   # the class itself says rclpy.node
         node.destroy_node()
         rclpy.shutdown()
     ''')

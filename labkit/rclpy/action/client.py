@@ -260,3 +260,7 @@ class ActionClient:
         for sub in (self._feedback_sub, self._status_sub):
             node.destroy_subscription(sub)
 
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -433,3 +433,7 @@ def _copy_goal_info(info):
     Time = msg_type('builtin_interfaces/msg/Time')
     return GoalInfo(goal_id=UUID(uuid=info.goal_id.uuid),
                     stamp=Time(sec=info.stamp.sec, nanosec=info.stamp.nanosec))
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

@@ -10,3 +10,7 @@ class LoggingSeverity(IntEnum):
     WARN = 30
     ERROR = 40
     FATAL = 50
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())

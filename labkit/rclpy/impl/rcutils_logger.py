@@ -213,3 +213,7 @@ class RcutilsLogger:
 
     def fatal(self, message, **kwargs):
         return self.log(message, LoggingSeverity.FATAL, **kwargs)
+
+
+from labkit.rclpy._public import present as _present  # noqa: E402
+_present(globals())
