@@ -20,8 +20,9 @@ from labkit.rclpy.expand_topic_name import expand_topic_name
 from labkit.rclpy.guard_condition import GuardCondition
 from labkit.rclpy.logging import get_logger
 from labkit.rclpy.publisher import Publisher
-from labkit.rclpy.qos import (DurabilityPolicy, QoSProfile, qos_profile_parameter_events,
-                              qos_profile_rosout_default, qos_profile_services_default)
+from labkit.rclpy.qos import (DurabilityPolicy, HistoryPolicy, QoSProfile,
+                              qos_profile_parameter_events, qos_profile_rosout_default,
+                              qos_profile_services_default)
 from labkit.rclpy.qos_event import PublisherEventCallbacks, SubscriptionEventCallbacks
 from labkit.rclpy.service import Service
 from labkit.rclpy.subscription import Subscription
@@ -362,7 +363,11 @@ class Node(ParameterMixin):
         self._check_msg_type(msg_type)
         ep = Endpoint(PUB, final_topic, _type_name(msg_type), self._info, qos_profile._copy())
         if qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL:
-            ep.history = history_deque(qos_profile.depth)
+            if qos_profile.history == HistoryPolicy.KEEP_ALL:      # bounded as readers are
+                from labkit.rclpy.subscription import KEEP_ALL_MAX_SAMPLES
+                ep.history = history_deque(KEEP_ALL_MAX_SAMPLES)
+            else:
+                ep.history = history_deque(qos_profile.depth)
         publisher = publisher_class(
             ep, msg_type, topic, qos_profile,
             event_callbacks=event_callbacks or PublisherEventCallbacks(),

@@ -3,6 +3,14 @@ from collections import deque
 
 from labkit.rclpy._entity import Handle, ReadyEntity
 
+# KEEP_ALL is "all, within the resource limits" in DDS. Humble's default middleware,
+# Fast DDS, sets ResourceLimitsQosPolicy.max_samples to 5000 for every reader and writer
+# (a keyless ROS topic is one instance, so max_samples is the bound); Cyclone DDS leaves it
+# unlimited on readers but bounds the writer's unacknowledged history. labkit follows Fast
+# DDS: a KEEP_ALL queue holds at most 5000 messages and, when full, rejects the newest
+# (DDS's REJECTED_BY_SAMPLES_LIMIT) instead of blocking the publisher or growing.
+KEEP_ALL_MAX_SAMPLES = 5000
+
 
 class Subscription(ReadyEntity):
     _kind = 'sub'
@@ -23,12 +31,22 @@ class Subscription(ReadyEntity):
         from labkit.rclpy.qos import HistoryPolicy
         if qos_profile.history == HistoryPolicy.KEEP_ALL:
             self._queue = deque()
+            self._deliver = self._deliver_keep_all
         else:
             self._queue = deque(maxlen=max(1, qos_profile.depth))
         self._executor_event = False
+        self.rejected = 0                 # KEEP_ALL samples refused at the resource limit
 
     def _deliver(self, msg):
         """The graph hands a message (shared by all subscriptions of one publish)."""
+        self._queue.append(msg)
+        if not self._queued:
+            self._signal()
+
+    def _deliver_keep_all(self, msg):
+        if len(self._queue) >= KEEP_ALL_MAX_SAMPLES:
+            self.rejected += 1
+            return
         self._queue.append(msg)
         if not self._queued:
             self._signal()

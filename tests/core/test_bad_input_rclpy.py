@@ -120,3 +120,32 @@ def test_rclpy_shutdown_after_labkit_reset_does_not_raise(virtual):
         rclpy.shutdown()
     rclpy.init(args=[])            # and a new init/shutdown cycle is ordinary
     rclpy.shutdown()
+
+
+def test_keep_all_queue_is_bounded_by_resource_limits(rclpy, msgs):
+    """99,067 messages queued in 10 s behind a slow subscriber (issue 13): KEEP_ALL now
+    stops at DDS's max_samples (Fast DDS's default, 5000), and publish never blocks."""
+    from labkit.rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile
+    from labkit.rclpy.subscription import KEEP_ALL_MAX_SAMPLES
+    assert KEEP_ALL_MAX_SAMPLES == 5000
+    node = rclpy.create_node('slow')
+    got = []
+    keep_all = QoSProfile(history=HistoryPolicy.KEEP_ALL)
+    sub = node.create_subscription(msgs.Int32, '/flood', lambda m: got.append(m.data), keep_all)
+    pub = node.create_publisher(msgs.Int32, '/flood', keep_all)
+    for i in range(KEEP_ALL_MAX_SAMPLES + 700):
+        pub.publish(msgs.Int32(data=i))          # returns at once, every time
+    assert len(sub._queue) == KEEP_ALL_MAX_SAMPLES and sub.rejected == 700
+    while len(got) < KEEP_ALL_MAX_SAMPLES:
+        rclpy.spin_once(node, timeout_sec=0)
+    assert got == list(range(KEEP_ALL_MAX_SAMPLES))   # the oldest kept, in order
+    pub.publish(msgs.Int32(data=-1))                  # room again
+    rclpy.spin_once(node, timeout_sec=0)
+    assert got[-1] == -1
+    # a KEEP_ALL transient-local publisher keeps a bounded history for late joiners
+    latched = QoSProfile(history=HistoryPolicy.KEEP_ALL,
+                         durability=DurabilityPolicy.TRANSIENT_LOCAL)
+    pub2 = node.create_publisher(msgs.Int32, '/latched', latched)
+    for i in range(KEEP_ALL_MAX_SAMPLES + 10):
+        pub2.publish(msgs.Int32(data=i))
+    assert len(pub2._endpoint.history) == KEEP_ALL_MAX_SAMPLES
