@@ -12,6 +12,7 @@ Everything else is ordinary ROS 2 code.
 __version__ = "0.1.0"
 
 __all__ = ["ros2", "colcon", "source", "rosdep", "sleep", "reset", "activate", "time_mode", "set_time_mode",
+           "connect", "disconnect",
            "load_ipython_extension",
            "unload_ipython_extension"]
 
@@ -54,6 +55,9 @@ def reset():
     """Stop every process and background job, shut every context down, clear the graph."""
     from labkit import process
     process.reset_all()
+    import sys as _sys
+    if "labkit.dds" in _sys.modules:  # a DDS connection ends with everything else
+        _sys.modules["labkit.dds"].disconnect()
     from labkit.rclpy import utilities as _rclpy_utilities
     _rclpy_utilities.forget_after_reset()   # a later rclpy.shutdown() in the notebook is fine
     import sys
@@ -70,6 +74,21 @@ def reset():
         _common.reset_virtual_uuids()
     except (ImportError, AttributeError):
         pass
+
+
+def connect(domain_id=None, localhost_only=None):
+    """Join the real ROS 2 graph over DDS (live time only; see labkit/dds/__init__.py).
+
+    domain_id: default ROS_DOMAIN_ID or 0. localhost_only: default True (loopback),
+    unless ROS_LOCALHOST_ONLY=0 / ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET say otherwise."""
+    from labkit import dds
+    return dds.connect(domain_id, localhost_only)
+
+
+def disconnect():
+    """Leave the DDS network; the in-process graph stays."""
+    from labkit import dds
+    dds.disconnect()
 
 
 def time_mode():

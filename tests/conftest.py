@@ -4,6 +4,9 @@ import os
 import sys
 
 os.environ.setdefault("LABKIT_TIME", "virtual")
+# `labkit exec` joins DDS in live time like a ROS 2 process; tests (and the programs they
+# start) stay in-process unless they ask (tests/dds sets LABKIT_DDS=on, a domain each)
+os.environ.setdefault("LABKIT_DDS", "off")
 
 import pytest  # noqa: E402
 

@@ -51,6 +51,8 @@ def exec_file(path, args=(), *, time_mode=None):
         return 2
     if time_mode is not None:
         set_time_mode(time_mode)
+    if not _join_dds():
+        return 1
     from labkit import compat
     was_active = compat.is_active()
     compat.activate()
@@ -76,6 +78,30 @@ def exec_file(path, args=(), *, time_mode=None):
         if not was_active:
             compat.deactivate()
     return rc
+
+
+def _join_dds(settle=False):
+    """Like a ROS 2 process, join the DDS graph (live time, unless LABKIT_DDS=off).
+    False after a one-line error that ROS would also stop on (a bad ROS_DOMAIN_ID)."""
+    from labkit import dds
+    if not dds.auto_enabled():
+        return True
+    try:
+        dds.connect()
+    except dds.ConfigError as e:
+        print(f"labkit: {e}", file=sys.stderr)
+        return False
+    except Exception as e:   # no DDS here: keep working in-process, say so once
+        print(f"[WARN] [labkit.dds]: {e}; staying in-process", file=sys.stderr)
+        return True
+    if settle:
+        dds.settle_discovery()
+    return True
+
+
+# nouns whose verbs look at or join the graph (others, like `interface`, stay offline)
+_GRAPH_NOUNS = {'node', 'topic', 'service', 'action', 'param', 'run', 'launch', 'bag',
+                'lifecycle', 'component'}
 
 
 def _exit_code(code):
@@ -106,6 +132,9 @@ def _stop_everything():
 
 
 def ros2_main(argv):
+    if argv[:1] and argv[0] in _GRAPH_NOUNS:
+        if not _join_dds(settle=argv[0] not in ('run', 'launch')):
+            return 1
     from labkit.cli.ros2 import run_command
     result = run_command(list(argv))
     if getattr(result, 'wait', None) is not None and result.returncode is None:

@@ -34,7 +34,7 @@ class Endpoint:
     """A publisher, subscription, service server or client as the graph sees it."""
 
     __slots__ = ("kind", "name", "type_name", "node", "qos", "gid", "sink", "matched",
-                 "history", "on_incompatible", "owner", "__weakref__")
+                 "history", "on_incompatible", "owner", "bridge", "__weakref__")
 
     def __init__(self, kind, name, type_name, node, qos=None, sink=None, owner=None):
         self.kind = kind
@@ -48,6 +48,7 @@ class Endpoint:
         self.history = None           # publisher with TRANSIENT_LOCAL: last `depth` messages
         self.on_incompatible = None   # callable(other_endpoint, policy_kind)
         self.owner = owner
+        self.bridge = None            # publisher: its DDS writer's sink (labkit.dds), if connected
 
 
 def _compatible(pub_qos, sub_qos):
@@ -132,7 +133,10 @@ class Graph:
                 if sub.node.domain_id != pub.node.domain_id:
                     continue
                 ok, kind = _compatible(pub.qos, sub.qos)
-                if ok:
+                if ok and sub.sink is None:   # remote (labkit.dds): the DDS writer carries it
+                    if pub.bridge is not None and pub.bridge not in matched:
+                        matched.append(pub.bridge)
+                elif ok:
                     matched.append(sub.sink)
                     if new is not None and sub is new and pub.history:
                         self._replay(pub, sub)
@@ -147,10 +151,15 @@ class Graph:
                     except Exception:
                         pass
 
+    def rematch(self, topic):
+        """Recompute a topic's matches (a publisher's DDS writer came or went)."""
+        with self.lock:
+            self._rematch(topic)
+
     @staticmethod
     def _replay(pub, sub):
         # TRANSIENT_LOCAL: a late-joining durable subscription gets the stored messages.
-        if sub.qos.durability != qos_match.TRANSIENT_LOCAL:
+        if sub.qos.durability != qos_match.TRANSIENT_LOCAL or sub.sink is None:
             return
         for msg in list(pub.history):
             sub.sink(msg)

@@ -90,6 +90,9 @@ def run_command(command, echo=None):
     if argv[:1] == ['jobs']:
         from labkit.cli.ros2 import jobs
         return jobs.jobs_command(argv)
+    if argv[:1] in (['connect'], ['disconnect']):
+        from labkit.cli.ros2 import connect
+        return connect.connect_command(argv)
     chunks = []
     out, err = _Recorder('stdout', chunks, echo), _Recorder('stderr', chunks, echo)
     streams = Streams(out, err)

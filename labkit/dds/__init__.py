@@ -1,0 +1,105 @@
+"""labkit on a real ROS 2 network (layer 2.5: between the graph and rclpy).
+
+    connect(domain_id=None, localhost_only=None)   join DDS (one participant per process)
+    disconnect()                                    leave; the in-process graph stays
+    bridge()                                        the current Bridge, or None
+
+A connected process mirrors its nodes, topics and services on Cyclone DDS exactly as
+a ROS 2 node does (see bridge.py), so real ROS 2 nodes (Humble or later, Fast DDS or
+Cyclone) and other labkit processes see each other. Not connected, nothing changes:
+the in-process path does not know this room exists.
+
+Time: DDS peers live in wall-clock time, so a connection needs live time. In virtual
+time (CI, notebook execution) `connect()` refuses with one line, and `labkit exec` /
+`labkit ros2` stay in-process; a notebook that talks to real ROS 2 calls
+`labkit.set_time_mode('live')` first. LABKIT_DDS=off keeps a process in-process
+(the test suite sets it so parallel runs never see each other).
+"""
+import os
+import threading
+
+from labkit.dds.config import ConfigError
+
+__all__ = ["connect", "disconnect", "bridge", "is_connected", "ConfigError", "ConnectError",
+           "auto_enabled", "settle_discovery"]
+
+_bridge = None
+_lock = threading.Lock()
+
+
+class ConnectError(RuntimeError):
+    """Joining DDS failed; the message is one line for the user."""
+
+
+def bridge():
+    return _bridge
+
+
+def is_connected():
+    return _bridge is not None
+
+
+def auto_enabled():
+    """May `labkit exec` / terminal `labkit ros2` join by default? (live time, not LABKIT_DDS=off)"""
+    from labkit.graph import world
+    if os.environ.get("LABKIT_DDS", "").strip().lower() in ("0", "off", "false", "no"):
+        return False
+    return world.mode() == "live"
+
+
+def connect(domain_id=None, localhost_only=None):
+    """Join the ROS 2 graph on DDS domain `domain_id` (default ROS_DOMAIN_ID or 0).
+
+    localhost_only None follows ROS_LOCALHOST_ONLY / ROS_AUTOMATIC_DISCOVERY_RANGE and
+    is True unless they open it up; False reaches the LAN (multicast discovery)."""
+    global _bridge
+    from labkit.dds import config
+    from labkit.graph import world
+    if world.mode() != "live":
+        raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
+                           "stays in-process (call labkit.set_time_mode('live') first)")
+    domain = config.domain_id(domain_id)
+    reach = config.localhost_only(localhost_only)
+    with _lock:
+        if _bridge is not None:
+            if _bridge.domain_id == domain and _bridge.localhost == reach:
+                return _bridge
+            _bridge.close()
+            _bridge = None
+        try:
+            from labkit.dds.bridge import Bridge
+        except ImportError:
+            raise ConnectError("labkit.connect(): the 'cyclonedds' package is not installed "
+                               "(pip install cyclonedds)") from None
+        try:
+            _bridge = Bridge(domain, reach)
+        except Exception as exc:
+            raise ConnectError(f"labkit.connect(): could not create a DDS participant on "
+                               f"domain {domain}: {exc}") from None
+    return _bridge
+
+
+def disconnect():
+    """Leave the DDS network: remote nodes vanish from the graph; local ones stay."""
+    global _bridge
+    with _lock:
+        b, _bridge = _bridge, None
+    if b is not None:
+        b.close()
+
+
+def settle_discovery(seconds=0.5, longest=4.0):
+    """Give discovery a moment (ros2cli's direct node spins 0.5 s for the same reason),
+    and up to `longest` for peers whose node list has not arrived yet (a Fast DDS
+    writer sends its stored ros_discovery_info at its next heartbeat, up to 3 s)."""
+    import time
+    b = _bridge
+    if b is None:
+        return
+    start = time.monotonic()
+    while True:
+        time.sleep(0.05)
+        waited = time.monotonic() - start
+        if waited >= longest or (waited >= seconds and not b.missing_infos()):
+            break
+    b.sync()

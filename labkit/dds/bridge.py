@@ -1,0 +1,563 @@
+"""One Cyclone DDS participant per labkit process, mirroring the in-process graph.
+
+Local endpoints get a DDS reader or writer each (`rt/`, `rq/`, `rr/` names, the
+ROS type names, the same QoS); remote ones, found through DDS discovery and the
+peers' `ros_discovery_info`, become ordinary graph entries whose node is a
+`RemoteNode`. Nothing above this room knows whether a peer is local or remote.
+
+Threads: the bridge thread alone creates and deletes DDS entities and changes the
+remote part of the graph (a graph listener only wakes it); Cyclone's listener
+threads only hand received messages to local sinks.
+"""
+import itertools
+import os
+import random
+import sys
+import threading
+
+
+from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI
+from labkit.dds import config, discovery, wire
+
+BARE_NODE = "_CREATED_BY_BARE_DDS_APP_"
+FASTDDS_VENDOR = b"\x01\x0f"
+FASTDDS_CLIENT_LINE = (
+    "[WARN] [labkit.dds]: a Fast DDS client called the labkit service '{name}': Fast DDS "
+    "matches replies by the RTPS related-sample-identity, which Cyclone DDS cannot set, so "
+    "the reply never reaches it. Start the caller with RMW_IMPLEMENTATION=rmw_cyclonedds_cpp.")
+
+
+class RemoteNode(NodeInfo):
+    """A node of another process, seen through DDS."""
+    __slots__ = ("remote", "participant")
+
+    def __init__(self, name, namespace, domain_id, participant):
+        super().__init__(name, namespace, "/", domain_id)
+        self.remote = True
+        self.participant = participant
+
+
+def is_remote(node):
+    return getattr(node, "remote", False)
+
+
+class _Header:
+    """What a local service sees for a remote request (rmw_service_info_t's shape)."""
+    __slots__ = ("request_id", "source_timestamp", "received_timestamp", "_reply")
+
+    def __init__(self, request_id, reply, stamp=0):
+        self.request_id = request_id
+        self.source_timestamp = stamp
+        self.received_timestamp = stamp
+        self._reply = reply
+
+
+class _RequestId:
+    __slots__ = ("writer_guid", "sequence_number")
+
+    def __init__(self, writer_guid, sequence_number):
+        self.writer_guid = writer_guid
+        self.sequence_number = sequence_number
+
+
+def _mask():
+    from cyclonedds.core import SampleState, ViewState, InstanceState
+    return SampleState.Any | ViewState.Any | InstanceState.Any
+
+
+def _message_class(type_name, part=None):
+    from labkit.interfaces import get_type
+    cls = get_type(type_name)
+    return getattr(cls, part) if part else cls
+
+
+class Bridge:
+    def __init__(self, domain_id, localhost=True, distro=None):
+        from cyclonedds.domain import Domain, DomainParticipant
+        from cyclonedds.core import Listener
+        from cyclonedds.builtin import (BuiltinDataReader, BuiltinTopicDcpsParticipant,
+                                        BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription)
+        from cyclonedds.qos import Qos, Policy
+        self.domain_id = domain_id
+        self.localhost = localhost
+        self.gid_size = discovery.gid_size(distro if distro is not None else config.distro())
+        self._mask = _mask()
+        self._wake = threading.Event()
+        self._stop = False
+        self._lock = threading.RLock()
+        self._domain = Domain(domain_id, config.cyclone_xml(localhost))
+        self.participant = DomainParticipant(domain_id)
+        self.guid = self.participant.guid.bytes
+        self._topics = {}
+        self._mirrors = {}            # local Endpoint -> _Mirror
+        self._by_gid = {}             # local client endpoint gid -> _Mirror
+        self._nodes_published = None
+        self._remote_eps = {}         # DDS GUID -> DcpsEndpoint sample (and kind)
+        self._participants = set()
+        self._infos = {}              # participant GUID -> [(ns, name, readers, writers)]
+        self._graph_nodes = {}        # (participant, ns, name) -> RemoteNode
+        self._graph_eps = {}          # DDS GUID -> (signature, Endpoint)
+        self._fastdds_warned = set()
+        self.client_ids = itertools.count(random.getrandbits(40) << 20)
+        wake = Listener(on_data_available=lambda reader: self._wake.set())
+        self._builtin = [
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsParticipant, listener=wake),
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication, listener=wake),
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsSubscription, listener=wake)]
+        info_qos = Qos(Policy.Reliability.Reliable(100_000_000), Policy.Durability.TransientLocal,
+                       Policy.History.KeepLast(1))
+        self._info_writer = self._writer(discovery.TOPIC, discovery.DDS_TYPE, info_qos)
+        self._info_reader = self._reader(
+            discovery.TOPIC, discovery.DDS_TYPE,
+            Qos(Policy.Reliability.Reliable(100_000_000), Policy.Durability.TransientLocal,
+                Policy.History.KeepLast(64)), lambda reader: self._wake.set())
+        self._publish_info()
+        GRAPH.listeners.append(self._wake.set)
+        self._thread = threading.Thread(target=self._run, name="labkit-dds", daemon=True)
+        self._thread.start()
+
+    # ------------------------------------------------------------ DDS helpers
+    def _topic(self, name, dds_type):
+        from cyclonedds.topic import Topic
+        key = (name, dds_type)
+        topic = self._topics.get(key)
+        if topic is None:
+            topic = self._topics[key] = Topic(self.participant, name, wire.raw_type(dds_type))
+        return topic
+
+    @staticmethod
+    def _ignore_local(qos):
+        # a process must not hear its own mirrored writers (it delivers in-process)
+        from cyclonedds.qos import Qos, Policy
+        return Qos(*qos, Policy.IgnoreLocal.Participant)
+
+    def _writer(self, name, dds_type, qos):
+        from cyclonedds.pub import DataWriter
+        return DataWriter(self.participant, self._topic(name, dds_type),
+                          qos=self._ignore_local(qos))
+
+    def _reader(self, name, dds_type, qos, on_data):
+        from cyclonedds.sub import DataReader
+        from cyclonedds.core import Listener
+        return DataReader(self.participant, self._topic(name, dds_type),
+                          qos=self._ignore_local(qos), listener=Listener(on_data_available=on_data))
+
+    def take(self, reader):
+        """[(bytes, sample_info)] of valid samples (a leaving writer's invalid one is dropped)."""
+        from cyclonedds._clayer import ddspy_take
+        out = ddspy_take(reader._ref, self._mask, 256)
+        if isinstance(out, int):
+            return []
+        return [(bytes(data), info) for data, info in out if info.valid_data]
+
+    # ------------------------------------------------------------ the thread
+    def _run(self):
+        while not self._stop:
+            self._wake.wait(0.25)
+            self._wake.clear()
+            if self._stop:
+                break
+            try:
+                with self._lock:
+                    self._sync_local()
+                    self._sync_remote()
+                    for mirror in list(self._mirrors.values()):
+                        if mirror.waiting:
+                            mirror.flush()
+                            if mirror.waiting:
+                                self._wake.set()
+            except Exception as exc:        # never let the bridge thread die silently
+                if os.environ.get("LABKIT_DDS_DEBUG"):
+                    import traceback
+                    traceback.print_exc()
+                else:
+                    print(f"[WARN] [labkit.dds]: {type(exc).__name__}: {exc}", file=sys.stderr)
+
+    def missing_infos(self):
+        """Peers with ROS endpoints whose ros_discovery_info has not arrived yet."""
+        with self._lock:
+            peers = {s.participant_key.bytes for _, s in self._remote_eps.values()
+                     if wire.entity_from_dds(s.topic_name)[0] is not None}
+            return [p for p in peers if p in self._participants and p not in self._infos]
+
+    def sync(self):
+        """Bring the DDS mirror up to date now (used before graph queries)."""
+        with self._lock:
+            self._sync_local()
+            self._sync_remote()
+
+    def close(self):
+        self._stop = True
+        self._wake.set()
+        if self._thread is not threading.current_thread():
+            self._thread.join(5)
+        try:
+            GRAPH.listeners.remove(self._wake.set)
+        except ValueError:
+            pass
+        with self._lock:
+            for ep, mirror in list(self._mirrors.items()):
+                mirror.close()
+            self._mirrors.clear()
+            with GRAPH.lock:
+                for _, ep in self._graph_eps.values():
+                    GRAPH._remove(ep)
+                for node in self._graph_nodes.values():
+                    if node in GRAPH.nodes:
+                        GRAPH.nodes.remove(node)
+                GRAPH._changed()
+            self._graph_eps.clear()
+            self._graph_nodes.clear()
+            for entity in [*self._builtin, self._info_writer, self._info_reader,
+                           *self._topics.values(), self.participant, self._domain]:
+                try:
+                    entity.__del__()
+                except Exception:
+                    pass
+            self._topics.clear()
+
+    # ------------------------------------------------------------ local -> DDS
+    def _local_endpoints(self):
+        with GRAPH.lock:
+            out = []
+            for kind in (PUB, SUB, SRV, CLI):
+                for eps in GRAPH.endpoints[kind].values():
+                    for ep in eps:
+                        if not is_remote(ep.node) and ep.node.domain_id == self.domain_id:
+                            out.append(ep)
+            nodes = [n for n in GRAPH.nodes
+                     if not is_remote(n) and n.domain_id == self.domain_id]
+            return out, nodes
+
+    def _sync_local(self):
+        eps, nodes = self._local_endpoints()
+        alive = set(map(id, eps))
+        changed = False
+        for ep in list(self._mirrors):
+            if id(ep) not in alive:
+                self._mirrors.pop(ep).close()
+                changed = True
+        for ep in eps:
+            if ep not in self._mirrors:
+                try:
+                    mirror = _Mirror(self, ep)
+                except LookupError:
+                    continue                  # a type labkit cannot load: stays local
+                self._mirrors[ep] = mirror
+                changed = True
+        if changed or self._nodes_published != self._node_signature(nodes):
+            self._publish_info(nodes)
+
+    def _node_signature(self, nodes):
+        return [(n.namespace, n.name, id(n)) for n in nodes]
+
+    def _publish_info(self, nodes=()):
+        by_node = {}
+        for ep, mirror in self._mirrors.items():
+            entry = by_node.setdefault(id(ep.node), ([], []))
+            entry[0].extend(mirror.reader_gids())
+            entry[1].extend(mirror.writer_gids())
+        listed = [(n.namespace, n.name, *by_node.get(id(n), ([], []))) for n in nodes]
+        data = discovery.encode(self.guid, listed, self.gid_size)
+        from cyclonedds._clayer import ddspy_write
+        ddspy_write(self._info_writer._ref, wire.pad4(data))
+        self._nodes_published = self._node_signature(nodes)
+
+    # ------------------------------------------------------------ DDS -> graph
+    def _sync_remote(self):
+        part_reader, pub_reader, sub_reader = self._builtin
+        from cyclonedds.core import InstanceState
+        for sample in part_reader.take(256):
+            key = sample.key.bytes
+            if sample.sample_info.instance_state == InstanceState.Alive:
+                if key != self.guid:
+                    self._participants.add(key)
+            else:
+                self._participants.discard(key)
+                self._infos.pop(key, None)
+        for reader, kind in ((pub_reader, "writer"), (sub_reader, "reader")):
+            for sample in reader.take(256):
+                key = sample.key.bytes
+                if sample.sample_info.instance_state == InstanceState.Alive:
+                    if sample.participant_key.bytes != self.guid:
+                        self._remote_eps[key] = (kind, sample)
+                else:
+                    self._remote_eps.pop(key, None)
+        for data, info in self.take(self._info_reader):
+            try:
+                participant, nodes = discovery.decode(data)
+            except discovery.DecodeError:
+                continue
+            if participant != self.guid:
+                self._infos[participant] = nodes
+        self._rebuild_remote()
+
+    def _rebuild_remote(self):
+        owner = {}
+        wanted_nodes = {}
+        for participant, nodes in self._infos.items():
+            if participant not in self._participants:
+                continue
+            for namespace, name, readers, writers in nodes:
+                key = (participant, namespace, name)
+                wanted_nodes[key] = True
+                for g in (*readers, *writers):
+                    owner[g] = key
+        wanted_eps = {}
+        for key, (kind, sample) in self._remote_eps.items():
+            role, name = wire.entity_from_dds(sample.topic_name)
+            if role is None or role == wire.REPLY:
+                continue
+            type_name, _ = wire.type_from_dds(sample.type_name)
+            if type_name is None:
+                continue
+            if role == wire.TOPIC:
+                ep_kind = PUB if kind == "writer" else SUB
+            else:
+                ep_kind = SRV if kind == "reader" else CLI
+            node_key = owner.get(key) or (sample.participant_key.bytes, "/", BARE_NODE)
+            wanted_eps[key] = ((ep_kind, name, type_name, node_key), sample)
+        with GRAPH.lock:
+            changed = False
+            for key in list(self._graph_eps):
+                signature, ep = self._graph_eps[key]
+                if key not in wanted_eps or wanted_eps[key][0] != signature:
+                    GRAPH._remove(ep)
+                    del self._graph_eps[key]
+                    changed = True
+            for key in list(self._graph_nodes):
+                if key not in wanted_nodes:
+                    node = self._graph_nodes.pop(key)
+                    if node in GRAPH.nodes:
+                        GRAPH.nodes.remove(node)
+                    changed = True
+            for key in wanted_nodes:
+                if key not in self._graph_nodes:
+                    node = self._node(key)
+                    GRAPH.nodes.append(node)
+                    changed = True
+            for key, (signature, sample) in wanted_eps.items():
+                if key in self._graph_eps:
+                    continue
+                ep_kind, name, type_name, node_key = signature
+                node = self._graph_nodes.get(node_key) or self._node(node_key, listed=False)
+                ep = Endpoint(ep_kind, name, type_name, node, wire.qos_from_dds(sample.qos))
+                ep.gid = discovery.make_gid(key, self.gid_size)
+                if ep_kind == SRV:
+                    ep.sink = self._remote_service_sink(ep, sample)
+                GRAPH.endpoints[ep_kind].setdefault(name, []).append(ep)
+                if ep_kind in (PUB, SUB):
+                    GRAPH._rematch(name, new=ep)
+                self._graph_eps[key] = (signature, ep)
+                changed = True
+            if changed:
+                GRAPH._changed()
+
+    def _node(self, key, listed=True):
+        participant, namespace, name = key
+        node = RemoteNode(name, namespace, self.domain_id, participant)
+        node.gid = discovery.make_gid(participant, self.gid_size)
+        if listed:
+            self._graph_nodes[key] = node
+        return node
+
+    # ------------------------------------------------------------ services
+    def _remote_service_sink(self, server_ep, sample):
+        fastdds = sample.participant_key.bytes[:2] == FASTDDS_VENDOR
+
+        def sink(request_and_header):
+            request, header = request_and_header
+            with self._lock:
+                mirror = self._by_gid.get(header.request_id.writer_guid)
+                if mirror is None:      # the client is newer than the last sync
+                    self._sync_local()
+                    mirror = self._by_gid.get(header.request_id.writer_guid)
+            if mirror is not None:
+                mirror.send_request(request, header, fastdds)
+        return sink
+
+    def warn_fastdds_client(self, name):
+        if name not in self._fastdds_warned:
+            self._fastdds_warned.add(name)
+            print(FASTDDS_CLIENT_LINE.format(name=name), file=sys.stderr, flush=True)
+
+
+class _Mirror:
+    """The DDS reader/writer(s) of one local endpoint."""
+
+    def __init__(self, bridge, ep):
+        self.bridge = bridge
+        self.ep = ep
+        self.reader = self.writer = None
+        self.waiting = False
+        kind = ep.kind
+        if kind in (PUB, SUB):
+            self.cls = _message_class(ep.type_name)
+            dds_type = wire.type_to_dds(ep.type_name)
+            name = wire.topic_to_dds(ep.name)
+            if kind == PUB:
+                self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos))
+                ep.bridge = self._publish
+                GRAPH.rematch(ep.name)
+            else:
+                self.reader = bridge._reader(name, dds_type, wire.qos_to_dds(ep.qos, reader=True),
+                                             self._on_message)
+            return
+        srv = _message_class(ep.type_name)
+        self.request_cls, self.response_cls = srv.Request, srv.Response
+        req_type = wire.type_to_dds(ep.type_name, "_Request")
+        rep_type = wire.type_to_dds(ep.type_name, "_Response")
+        qos = wire.qos_to_dds(ep.qos)
+        if kind == SRV:
+            self.reader = bridge._reader(wire.request_topic(ep.name), req_type, qos,
+                                         self._on_request)
+            self.writer = bridge._writer(wire.reply_topic(ep.name), rep_type, qos)
+            self._senders = {}
+        else:
+            self.writer = bridge._writer(wire.request_topic(ep.name), req_type, qos)
+            self.reader = bridge._reader(wire.reply_topic(ep.name), rep_type, qos, self._on_reply)
+            self.client_id = next(bridge.client_ids)
+            self.pending = {}         # sequence -> local header
+            self.fifo = []            # Fast DDS servers: replies carry no header
+            self.outbox = []
+            bridge._by_gid[ep.gid] = self
+
+    def reader_gids(self):
+        return [self.reader.guid.bytes] if self.reader is not None else []
+
+    def writer_gids(self):
+        return [self.writer.guid.bytes] if self.writer is not None else []
+
+    def close(self):
+        if self.ep.kind == PUB:
+            self.ep.bridge = None
+            GRAPH.rematch(self.ep.name)
+        if self.ep.kind == CLI:
+            self.bridge._by_gid.pop(self.ep.gid, None)
+        for entity in (self.reader, self.writer):
+            if entity is not None:
+                try:
+                    entity.__del__()
+                except Exception:
+                    pass
+        self.reader = self.writer = None
+
+    # -- topics
+    def _publish(self, msg):
+        from labkit.interfaces import rmw_serialize
+        from cyclonedds._clayer import ddspy_write
+        writer = self.writer
+        if writer is not None:
+            ddspy_write(writer._ref, wire.pad4(rmw_serialize(msg)))
+
+    def _on_message(self, reader):
+        from labkit.interfaces import deserialize
+        sink = self.ep.sink
+        for data, _ in self.bridge.take(reader):
+            try:
+                msg = deserialize(data, self.cls)
+            except Exception:
+                continue
+            if sink is not None:
+                sink(msg)
+
+    # -- a local service answering remote clients
+    def _on_request(self, reader):
+        from labkit.interfaces import deserialize
+        for data, info in self.bridge.take(reader):
+            if self._from_fastdds(reader, info.publication_handle):
+                self.bridge.warn_fastdds_client(self.ep.name)
+                continue
+            try:
+                client_id, seq, body = wire.unframe_request(data)
+                request = deserialize(body, self.request_cls)
+            except Exception:
+                continue
+            header = _Header(_RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
+                             self._make_reply(client_id, seq), info.source_timestamp)
+            if self.ep.sink is not None:
+                self.ep.sink((request, header))
+
+    def _from_fastdds(self, reader, handle):
+        known = self._senders.get(handle)
+        if known is None:
+            try:
+                data = reader.get_matched_publication_data(handle)
+                known = data.participant_key.bytes[:2] == FASTDDS_VENDOR
+            except Exception:
+                known = False
+            self._senders[handle] = known
+        return known
+
+    def _make_reply(self, client_id, seq):
+        def reply(header, response):
+            from labkit.interfaces import rmw_serialize
+            from cyclonedds._clayer import ddspy_write
+            writer = self.writer
+            if writer is not None:
+                ddspy_write(writer._ref, wire.frame_request(client_id, seq,
+                                                            rmw_serialize(response)))
+        return reply
+
+    # -- a local client calling a remote service
+    def send_request(self, request, header, fastdds):
+        from labkit.interfaces import rmw_serialize
+        payload = rmw_serialize(request)
+        seq = header.request_id.sequence_number
+        with self.bridge._lock:
+            if fastdds:
+                self.fifo.append(header)
+                data = wire.pad4(payload)
+            else:
+                self.pending[seq] = header
+                data = wire.frame_request(self.client_id, seq, payload)
+            self.outbox.append(data)
+            self.waiting = True
+            self.flush()
+            if self.waiting:
+                self.bridge._wake.set()
+
+    def flush(self):
+        """Send queued requests once the server's reader and writer are matched."""
+        from cyclonedds._clayer import ddspy_write
+        writer, reader = self.writer, self.reader
+        if writer is None:
+            self.outbox.clear()
+            self.waiting = False
+            return
+        try:
+            ready = (writer.get_matched_subscriptions() and reader.get_matched_publications())
+        except Exception:
+            ready = True
+        if not ready:
+            return
+        for data in self.outbox:
+            ddspy_write(writer._ref, data)
+        self.outbox.clear()
+        self.waiting = False
+
+    def _on_reply(self, reader):
+        from labkit.interfaces import deserialize
+        for data, _ in self.bridge.take(reader):
+            header = None
+            body = data
+            if self.pending and len(data) >= 4 + wire.HEADER.size:
+                client_id, seq, rest = wire.unframe_request(data)
+                if client_id == self.client_id:
+                    header = self.pending.pop(seq, None)
+                    body = rest
+                elif not self.fifo:
+                    continue              # another client's reply
+            if header is None:
+                if not self.fifo:
+                    continue
+                header = self.fifo.pop(0)
+            try:
+                response = deserialize(body, self.response_cls)
+            except Exception:
+                continue
+            reply = header._reply
+            if reply is not None:
+                reply(header, response)
+
+

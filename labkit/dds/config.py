@@ -1,0 +1,74 @@
+"""Which DDS domain, and how far discovery reaches: the ROS environment variables.
+
+ROS_DOMAIN_ID (0..232; rcl refuses anything else), Humble's ROS_LOCALHOST_ONLY and
+Jazzy's ROS_AUTOMATIC_DISCOVERY_RANGE. labkit's default is localhost only: the
+loopback interface, no multicast, the peer 127.0.0.1 (the LAN only when asked).
+"""
+import os
+
+MAX_DOMAIN_ID = 232
+# Fast DDS in LOCALHOST mode probes only the first few participant indexes:
+# Cyclone must take the lowest free one, and probe a few more itself.
+MAX_PARTICIPANT_INDEX = 32
+
+
+class ConfigError(ValueError):
+    """A setting that ROS itself would refuse (the message is ROS's one line)."""
+
+
+def domain_id(value=None):
+    """The domain to join: `value`, else ROS_DOMAIN_ID, else 0."""
+    if value is None:
+        text = os.environ.get("ROS_DOMAIN_ID", "").strip()
+        if not text:
+            return 0
+        if not text.isdigit():
+            raise ConfigError("failed to get default domain id: "
+                              "ROS_DOMAIN_ID is not an integral number")
+        value = int(text)
+    if isinstance(value, bool) or not isinstance(value, int):
+        raise ConfigError(f"domain_id must be an integer, got {value!r}")
+    if not 0 <= value <= MAX_DOMAIN_ID:
+        raise ConfigError(f"Domain id {value} is out of range: "
+                          f"it must be from 0 to {MAX_DOMAIN_ID}")
+    return value
+
+
+def localhost_only(value=None):
+    """True (the default), or False when the user asked for the LAN.
+
+    ROS_LOCALHOST_ONLY=0 (Humble) or ROS_AUTOMATIC_DISCOVERY_RANGE=SUBNET|SYSTEM_DEFAULT
+    (Jazzy) open it up; ROS_AUTOMATIC_DISCOVERY_RANGE=OFF gives 'off' (no peers)."""
+    if value is not None:
+        return bool(value)
+    rng = os.environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "").strip().upper()
+    if rng == "OFF":
+        return "off"
+    if rng in ("SUBNET", "SYSTEM_DEFAULT"):
+        return False
+    if rng == "LOCALHOST":
+        return True
+    if os.environ.get("ROS_LOCALHOST_ONLY", "").strip() == "0":
+        return False
+    return True
+
+
+def cyclone_xml(localhost=True):
+    """The Cyclone DDS configuration: loopback and unicast to 127.0.0.1 by default."""
+    if localhost is False:
+        general = "<Interfaces><NetworkInterface autodetermine=\"true\"/></Interfaces>"
+        discovery = "<ParticipantIndex>auto</ParticipantIndex>"
+    else:
+        general = ("<Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
+                   "<AllowMulticast>false</AllowMulticast>")
+        peers = "" if localhost == "off" else "<Peers><Peer address=\"127.0.0.1\"/></Peers>"
+        discovery = ("<ParticipantIndex>auto</ParticipantIndex>"
+                     f"<MaxAutoParticipantIndex>{MAX_PARTICIPANT_INDEX}</MaxAutoParticipantIndex>"
+                     + peers)
+    return ("<CycloneDDS><Domain Id=\"any\"><General>" + general + "</General>"
+            "<Discovery>" + discovery + "</Discovery>"
+            "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
+
+
+def distro():
+    return os.environ.get("ROS_DISTRO", "humble")
