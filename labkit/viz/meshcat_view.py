@@ -340,7 +340,7 @@ class RobotView:
     def show(self, live=None):
         """Display the view. live=None: a live page (127.0.0.1 server) when labkit runs in
         live time inside a kernel, else the static snapshot (what the book stores)."""
-        from IPython.display import HTML, display
+        from IPython.display import display
         if live is None:
             import labkit
             from IPython import get_ipython
@@ -349,7 +349,8 @@ class RobotView:
                     and getattr(shell, "kernel", None) is not None)
         if live:
             self.serve()
-        display(HTML(self._repr_html_()))
+        # raw HTML: IPython's HTML() warns about every "<iframe" ("Consider using IFrame")
+        display({"text/html": self._repr_html_()}, raw=True)
 
     # -- live: follow /tf ----------------------------------------------------------
     def follow(self, fixed_frame=None):
