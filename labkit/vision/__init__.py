@@ -9,6 +9,8 @@ import os
 SAMPLE_CLIP = os.path.normpath(os.path.join(
     os.path.dirname(os.path.abspath(__file__)), '..', '..',
     'book', 'part2_facer', 'media', 'facer_sample.avi'))
+# the scene for tuning the detector: two faces, a turned-away face, a false positive
+CROWD_CLIP = os.path.join(os.path.dirname(SAMPLE_CLIP), 'facer_crowd.avi')
 
 
 def register():

@@ -128,3 +128,64 @@ def _grey_for_display(image, _error):
     grey = np.zeros(image.shape, np.uint8) if hi <= lo else \
         ((image - lo) * (255.0 / (hi - lo))).astype(np.uint8)
     return cv2.cvtColor(grey, cv2.COLOR_GRAY2BGR)
+
+
+class FrameLog:
+    """When each message of a topic arrived (node clock, seconds): frame rates over time.
+
+        log = FrameLog('frame_image')    # a small subscriber process, node /frame_log
+        labkit.sleep(9)
+        log.count(0, 9)                  # messages that arrived in [0, 9) s of its clock
+        log.rates()                      # [(second, messages in that second), ...]
+
+    Like ImageViewer, an ordinary rclpy node in its own labkit process; it keeps
+    only the arrival times, never the pixels.
+    """
+
+    def __init__(self, topic='frame_image', node_name='frame_log'):
+        self.topic = topic
+        self.node_name = node_name
+        self.times = []
+        self.start = None            # the node clock when the subscriber started
+        from labkit import process
+        self.process = process.start(name=node_name, main=self._main, args=[node_name], echo=False)
+
+    def _main(self, args=None):
+        import labkit.rclpy as rclpy
+        from labkit.interfaces import get_type
+
+        rclpy.init(args=args)
+        node = rclpy.create_node(self.node_name)
+        clock = node.get_clock()
+        self.start = clock.now().nanoseconds * 1e-9
+        node.create_subscription(get_type('sensor_msgs/msg/Image'), self.topic,
+                                 lambda _msg: self.times.append(clock.now().nanoseconds * 1e-9),
+                                 10)
+        try:
+            rclpy.spin(node)
+        except KeyboardInterrupt:
+            pass
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+    def count(self, begin=None, end=None):
+        """Messages that arrived in [begin, end) seconds after the log started."""
+        start = self.start or 0.0
+        return sum(1 for t in list(self.times)
+                   if (begin is None or t - start >= begin) and (end is None or t - start < end))
+
+    def rates(self):
+        """Messages per whole second since the log started: [(second, count), ...]."""
+        times = [t - (self.start or 0.0) for t in list(self.times)]
+        if not times:
+            return []
+        last = int(max(times))
+        counts = [0] * (last + 1)
+        for t in times:
+            counts[int(t)] += 1
+        return list(enumerate(counts))
+
+    def close(self):
+        if self.process is not None:
+            self.process.stop()
+            self.process = None

@@ -207,3 +207,17 @@ def test_no_camera_reports_camera_off(tester, tmp_path):
     assert result.stdout == 'Set parameter successful\n', result.stderr
     executor.spin_until_future_complete(_never(), timeout_sec=0.55)
     assert len(frames) == 5
+
+
+def test_missing_cascade_file_is_a_clear_error(virtual, monkeypatch):
+    import rclpy
+    import facer_handle.identify_image as identify
+    # not installed here: no share/facer_handle, so the search goes on to OpenCV's own folders
+    assert identify.find_cascade().endswith('haarcascade_frontalface_default.xml')
+    monkeypatch.setattr(identify, 'find_cascade', lambda: None)
+    rclpy.init(args=[])
+    try:
+        with pytest.raises(RuntimeError, match='sudo apt install opencv-data'):
+            identify.IdentifyImage()
+    finally:
+        rclpy.try_shutdown()

@@ -33,3 +33,27 @@ def test_faces_exactly_on_the_face_frames():
     cascade = face_detector()
     for index in (0, 5, 6, 11, 12, 17):
         assert count_faces(cascade, frames[index]) == PLAN[index], index
+
+
+def test_crowd_clip_has_two_faces_and_a_false_positive_that_min_neighbors_removes():
+    from labkit.vision import CROWD_CLIP
+    from labkit.vision.make_sample_clip import CROWD_FACES, CROWD_STRICT
+    assert os.path.getsize(CROWD_CLIP) < 400_000
+    cap = cv2.VideoCapture(CROWD_CLIP)
+    frames = []
+    while True:
+        ok, frame = cap.read()
+        if not ok:
+            break
+        frames.append(frame)
+    cap.release()
+    assert len(frames) == 8 and frames[0].shape == (480, 640, 3)
+    cascade = face_detector()
+    for frame in (frames[0], frames[4]):
+        assert count_faces(cascade, frame) == CROWD_FACES == 3       # 2 faces + the cell patch
+        assert count_faces(cascade, frame, min_neighbors=20) == CROWD_STRICT == 2
+        # the false positive is in the cell picture (bottom right), the faces at the top
+        grey = cv2.cvtColor(frame, cv2.COLOR_BGR2GRAY)
+        boxes = cascade.detectMultiScale(grey, 1.1, 5, minSize=(30, 30))
+        assert sorted((x >= 320, y >= 240) for x, y, _, _ in boxes) == [
+            (False, False), (True, False), (True, True)]

@@ -47,3 +47,17 @@ def test_viewer_shows_depth_images_as_grey(virtual, hook):
     node.destroy_node()
     rclpy.shutdown()
     viewer.close()
+
+
+def test_frame_log_counts_frames_per_second(virtual):
+    from labkit.vision.viewer import FrameLog
+    from test_facer_nodes import _camera
+    _camera(timer_period=0.25)
+    log = FrameLog('frame_image')
+    labkit.sleep(3.0)
+    assert labkit.ros2('node list').stdout.split() == ['/capture_image', '/frame_log']
+    assert log.count() in (11, 12, 13)
+    assert [n for _, n in log.rates()[1:3]] == [4, 4]     # whole seconds at 4 Hz
+    assert log.count(1, 2) == 4
+    log.close()
+    assert labkit.ros2('node list').stdout.split() == ['/capture_image']

@@ -1,3 +1,6 @@
+import os
+from glob import glob
+
 from setuptools import setup
 
 package_name = 'facer_handle'
@@ -10,6 +13,8 @@ setup(
         ('share/ament_index/resource_index/packages',
             ['resource/' + package_name]),
         ('share/' + package_name, ['package.xml']),
+        # 人脸模型文件随功能包一起安装到 share/facer_handle/data
+        (os.path.join('share', package_name, 'data'), glob('data/*.xml')),
     ],
     install_requires=['setuptools'],
     zip_safe=True,

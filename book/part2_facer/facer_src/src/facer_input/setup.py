@@ -15,6 +15,8 @@ setup(
         ('share/' + package_name, ['package.xml']),
         # 安装 launch 文件，ros2 launch 才能找到它们
         (os.path.join('share', package_name, 'launch'), glob('launch/*launch.[pxy][yma]*')),
+        # 安装参数文件，启动文件用 get_package_share_directory 找到它们
+        (os.path.join('share', package_name, 'config'), glob('config/*.yaml')),
     ],
     install_requires=['setuptools'],
     zip_safe=True,

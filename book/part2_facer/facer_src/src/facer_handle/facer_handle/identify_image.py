@@ -3,26 +3,68 @@
 - 话题 frame_image 的订阅者：用 OpenCV 的 Haar 级联分类器在每一帧里找人脸；
 - 话题 face_image 的发布者：框出人脸的图像，供输出模块显示；
 - 服务 face_result 的服务端：回答最新一帧的识别结果。
+
+参数（检测器的三个旋钮，每一帧都重新读取，ros2 param set 之后下一帧就生效）：
+- scale_factor (double, 默认 1.1, 1.01～2.0)：相邻两次搜索之间窗口放大的倍数；
+- min_neighbors (int, 默认 5, 0～50)：一个框至少要有几个相邻的候选框支持才算数；
+- min_size (int, 默认 30, 10～480)：人脸框的最小边长（像素）。
 """
+import os
+
 import cv2
 import rclpy
+from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
 from cv_bridge import CvBridge
+from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
 from rclpy.node import Node
 from sensor_msgs.msg import Image
 
 from facer_interfaces.srv import FaceResult
 
 NO_FACE = '未检测到人脸'
+CASCADE = 'haarcascade_frontalface_default.xml'
+
+
+def find_cascade():
+    """人脸模型文件的路径：先找随功能包安装的，再找 opencv-data 的，最后找 pip 版 OpenCV 的。"""
+    folders = []
+    try:
+        folders.append(os.path.join(get_package_share_directory('facer_handle'), 'data'))
+    except PackageNotFoundError:
+        pass
+    folders.append('/usr/share/opencv4/haarcascades')  # sudo apt install opencv-data
+    if hasattr(cv2, 'data'):  # pip 安装的 opencv-python 自带一份；Ubuntu 的 python3-opencv 没有
+        folders.append(cv2.data.haarcascades)
+    for folder in folders:
+        path = os.path.join(folder, CASCADE)
+        if os.path.isfile(path):
+            return path
+    return None
 
 
 class IdentifyImage(Node):
 
     def __init__(self):
         super().__init__('identify_image')
+        self.declare_parameter('scale_factor', 1.1, ParameterDescriptor(
+            description='检测窗口每次放大的倍数：越接近 1 越细致，也越慢',
+            floating_point_range=[FloatingPointRange(from_value=1.01, to_value=2.0)]))
+        self.declare_parameter('min_neighbors', 5, ParameterDescriptor(
+            description='一个框至少要有几个相邻候选框支持：越大越不容易误报',
+            integer_range=[IntegerRange(from_value=0, to_value=50, step=1)]))
+        self.declare_parameter('min_size', 30, ParameterDescriptor(
+            description='人脸框的最小边长（像素）：更小的脸不检测',
+            integer_range=[IntegerRange(from_value=10, to_value=480, step=1)]))
+
+        path = find_cascade()
+        self.face_classifier = cv2.CascadeClassifier(path) if path else cv2.CascadeClassifier()
+        # 文件读不出来时 OpenCV 并不报错，只得到一个“空”分类器，要自己检查
+        if self.face_classifier.empty():
+            raise RuntimeError(
+                f'找不到人脸模型 {CASCADE}：把它放进功能包的 data 文件夹重新构建，'
+                '或者 sudo apt install opencv-data')
+
         self.cv_bridge = CvBridge()
-        # OpenCV 自带训练好的模型文件，cv2.data.haarcascades 是它们所在的文件夹
-        self.face_classifier = cv2.CascadeClassifier(
-            cv2.data.haarcascades + 'haarcascade_frontalface_default.xml')
         self.result = NO_FACE
         self.subscription = self.create_subscription(
             Image, 'frame_image', self.listener_callback, 10)
@@ -32,8 +74,12 @@ class IdentifyImage(Node):
     def listener_callback(self, msg):
         frame = self.cv_bridge.imgmsg_to_cv2(msg, 'bgr8')  # ROS 图像消息 -> OpenCV 图像
         gray = cv2.cvtColor(frame, cv2.COLOR_BGR2GRAY)
+        size = self.get_parameter('min_size').value
         faces = self.face_classifier.detectMultiScale(
-            gray, scaleFactor=1.1, minNeighbors=5, minSize=(30, 30))
+            gray,
+            scaleFactor=self.get_parameter('scale_factor').value,
+            minNeighbors=self.get_parameter('min_neighbors').value,
+            minSize=(size, size))
         # 每一帧都重新给出结果：上一帧有人脸，不代表这一帧也有
         self.result = f'检测到 {len(faces)} 张人脸' if len(faces) else NO_FACE
         annotated = frame.copy()  # 不在收到的消息上作画
