@@ -75,6 +75,7 @@ class InvalidParameterTypeException(ParameterException):
             f", expecting type '{expected_type}'", *args)
         self._actual_type = desired_parameter.type_
         self._param_name = desired_parameter.name
+        self._expected_type = expected_type     # labkit: rclcpp's text is made from these
 
 
 class InvalidParameterValueException(ParameterException):

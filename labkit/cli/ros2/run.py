@@ -3,6 +3,7 @@ import argparse
 import shlex
 
 from labkit.cli.ros2._base import CliError
+from labkit.commands import CompletedCommand
 
 
 def add_arguments(parser, cli_name):
@@ -42,6 +43,24 @@ def start_run_job(argv, args):
     command = 'ros2 run ' + ' '.join(shlex.quote(a) for a in
                                      [args.package_name, args.executable_name, *extra])
     new = args.new or len(extra) < len(args.argv)
-    return jobs.start(argv, command, lambda sink: jobs.start_process(
+    result = jobs.start(argv, command, lambda sink: jobs.start_process(
         [args.package_name, args.executable_name, *extra],
         f'{args.package_name}/{args.executable_name}', sink=sink), new=new)
+    code = getattr(result, 'returncode', 0)
+    if isinstance(result, CompletedCommand) and code:
+        # the program ended at once: ros2 run says how, as ros2run's run_executable does
+        line = f'{ROS2RUN_MSG_PREFIX} {exit_description(code)}\n'
+        result = CompletedCommand(result.args, code, result.stdout + line, result.stderr,
+                                  result.exception, list(result.chunks) + [('stdout', line)])
+    return result
+
+
+ROS2RUN_MSG_PREFIX = '[ros2run]:'
+
+
+def exit_description(returncode):
+    """A signal's name for a process killed by it (-N), else the exit code."""
+    import signal
+    if returncode < 0 and -returncode in signal.valid_signals():
+        return signal.strsignal(-returncode)
+    return 'Process exited with failure %d' % returncode
