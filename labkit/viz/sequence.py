@@ -217,8 +217,11 @@ class Trace:
             out.append(f'<text x="{mid:.1f}" y="{y - 5:.1f}" text-anchor="middle" font-size="{FONT:.0f}" '
                        f'fill="{colour}">{escape(self._arrow_text(e))}</text>')
         legend_y = height - 8
-        out.append(f'<text x="6" y="{legend_y:.1f}" font-size="{SMALL_FONT:.0f}" fill="#555">'
-                   '实线黑箭头：请求　虚线：应答　橙色：话题消息（×N 表示连续 N 条）</text>')
+        kinds = {e.kind for e in self.events}
+        legend = "　".join(text for kind, text in (("request", "实线黑箭头：请求"), ("response", "虚线：应答"),
+                                                  ("message", "橙色：话题消息（×N 表示连续 N 条）"))
+                          if kind in kinds)
+        out.append(f'<text x="6" y="{legend_y:.1f}" font-size="{SMALL_FONT:.0f}" fill="#555">{legend}</text>')
         out.append('</svg>')
         return "\n".join(out)
 
