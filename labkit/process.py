@@ -15,6 +15,8 @@ __all__ = ["Process", "current", "start", "processes", "reset_all", "main_proces
 
 _pids = itertools.count(4001)         # fake pids, deterministic
 _lock = threading.RLock()
+_echo_lock = threading.RLock()        # one writer's lines at a time reach the notebook
+MAX_OUTPUT_LINES = 20000              # Process.output keeps the newest this many lines
 
 
 class RclpyState:
@@ -39,7 +41,11 @@ class Process:
         self.returncode = None
         self.echo = True                # echo output to the notebook/console
         self.sink = None                # optional callable(stream_name, text)
+        self.view = None                # optional live output area: .write(stream_name, text)
+        self.windows = []               # live views it opened (canvas, keypad): shown again
+        self.parent = None              # the process that started it
         self._partial = {"stdout": "", "stderr": ""}
+        self._echo_partial = {"stdout": "", "stderr": ""}   # a line not yet ended
         self._sigint = False            # a stop request, delivered like SIGINT
 
     def __repr__(self):
@@ -55,23 +61,53 @@ class Process:
         buf = self._partial[stream_name] + text
         *lines, rest = buf.split("\n")
         self.output.extend(lines)
+        if len(self.output) > 2 * MAX_OUTPUT_LINES:   # a flood must not grow without bound
+            del self.output[:len(self.output) - MAX_OUTPUT_LINES]
         self._partial[stream_name] = rest
         if self.sink is not None:
             self.sink(stream_name, text)
         elif self.echo:
+            self.echo_text(stream_name, text)
+
+    def echo_text(self, stream_name, text, flush=True):
+        """Show `text` as this process's output, whole lines at a time: like a terminal's
+        line discipline, so two writers' lines never interleave mid-line (the rest waits
+        for its newline, the cell's end or the process's end)."""
+        with _echo_lock:
+            buf = self._echo_partial[stream_name] + text
+            cut = buf.rfind("\n") + 1
+            self._echo_partial[stream_name] = buf[cut:]
+            if cut:
+                self._echo(stream_name, buf[:cut], flush)
+
+    def _echo(self, stream_name, text, flush=True):
+        with _echo_lock:
+            if self.view is not None:
+                self.view.write(stream_name, text)
+                return
             target = _original[stream_name]
             if target is not None:
                 try:
                     target.write(text)
-                    target.flush()
+                    if flush:
+                        target.flush()
                 except Exception:
                     pass
+
+    def flush_echo(self):
+        """Show a line the process started but has not ended yet (at a cell's end, at exit)."""
+        with _echo_lock:
+            for key in ("stdout", "stderr"):
+                text, self._echo_partial[key] = self._echo_partial[key], ""
+                if text:
+                    self._echo(key, text)
 
     def _flush_partial(self):
         for key in ("stdout", "stderr"):
             if self._partial[key]:
                 self.output.append(self._partial[key])
                 self._partial[key] = ""
+        self.flush_echo()
 
     # -- lifecycle -----------------------------------------------------------
     def stop(self, timeout_s=2.0):
@@ -292,6 +328,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     install_output_proxy()
     _install_argv_proxy()
     proc = Process(name, argv=args)
+    proc.parent = current()             # who started it (a launch starts its nodes)
     proc.echo = echo
     proc.sink = sink
 
@@ -318,6 +355,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
             proc._flush_partial()
             world.notify()
 
+    reap()
     with _lock:
         _processes.append(proc)
     proc.thread = world.start_thread(body, name=f"labkit-{name}-{proc.pid}")
@@ -421,11 +459,47 @@ def processes():
         return list(_processes)
 
 
+def reap():
+    """Forget processes that have ended on their own (a real shell reaps its children):
+    nothing keeps a finished process, its output or its nodes alive."""
+    with _lock:
+        _processes[:] = [p for p in _processes
+                         if p.returncode is None or (p.thread is not None and p.thread.is_alive())]
+
+
+def descendants(proc):
+    """`proc` and every process it started, directly or not (that are still known)."""
+    found = [proc]
+    for other in processes():
+        p = other.parent
+        while p is not None and p is not other:
+            if p is proc:
+                found.append(other)
+                break
+            p = p.parent
+    return found
+
+
+def flush_echo_all():
+    """Show every process's unfinished line (a notebook cell has ended)."""
+    for proc in processes():
+        proc.flush_echo()
+
+
+# called by labkit.reset() after every process stopped (jobs forget their handles, ...)
+reset_hooks = []
+
+
 def reset_all():
     """Stop every process, shut every context down, clear the graph."""
     for proc in reversed(processes()):
         proc.stop()
     MAIN.stop()
+    for hook in list(reset_hooks):
+        try:
+            hook()
+        except Exception:
+            pass
     from labkit.graph.registry import GRAPH
     GRAPH.clear()
     # let threads that were told to stop finish, then virtual time starts over too: what

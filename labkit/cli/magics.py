@@ -43,26 +43,97 @@ def ros2_magic(line):
         print(f'ros2: {e}', file=sys.stderr)
         return
     echoed = []
+    lines = LineWriter()
 
     def echo(name, text):
         if name == 'stdout' and target is not None:
             return                      # goes to the file, like `> file` in a shell
-        stream = sys.stdout if name == 'stdout' else sys.stderr
-        stream.write(text)
-        stream.flush()
+        lines.write(name, text)
         echoed.append(name)
 
-    result = run_command(argv, echo=echo)
+    try:
+        result = run_command(argv, echo=echo)
+    finally:
+        lines.flush()
     if isinstance(result, Job):
         if target is not None:
             _redirect_job(result.process, target, mode)
-        return  # its output arrives through the process sink, like a terminal's
+        # its output arrives through the process, like a terminal's; the cell gets the
+        # handle: `job = %ros2 run ...`, later `job.stop()`
+        return JobHandle(result)
     if target is not None:
         with open(target, mode) as f:
             f.write(result.stdout)
     # lines the command made without the recorder (early argument errors) still show
     if not echoed and (result.stdout or result.stderr) and target is None:
         emit(result)
+    running = getattr(result, 'job', None)
+    if running is not None:             # "already running": the handle of that job
+        return JobHandle(running)
+
+
+class LineWriter:
+    """Writes to sys.stdout/sys.stderr whole lines at a time, as a terminal shows them
+    (a verb prints a line in several pieces; the notebook must get it in one)."""
+
+    def __init__(self):
+        self._partial = {'stdout': '', 'stderr': ''}
+
+    def write(self, name, text):
+        buf = self._partial[name] + text
+        cut = buf.rfind('\n') + 1
+        self._partial[name] = buf[cut:]
+        if cut:
+            other = 'stderr' if name == 'stdout' else 'stdout'
+            self._out(other, self._partial[other])     # a started line of the other
+            self._partial[other] = ''                   # stream goes first, as it came
+            self._out(name, buf[:cut])
+
+    def flush(self):
+        for name in ('stdout', 'stderr'):
+            self._out(name, self._partial[name])
+            self._partial[name] = ''
+
+    @staticmethod
+    def _out(name, text):
+        if text:
+            stream = sys.stdout if name == 'stdout' else sys.stderr
+            stream.write(text)
+            stream.flush()
+
+
+class JobHandle:
+    """What `job = %ros2 run ...` gives the cell: the background job (`.stop()`,
+    `.wait()`, `.output`, `.show()`, ...). The cell that started the job already shows
+    it, so as the cell's last line it adds nothing; displayed later, it shows the
+    job again."""
+
+    def __init__(self, job):
+        self.job = job
+        self._cell = _execution_count()
+
+    def __getattr__(self, name):
+        return getattr(self.job, name)
+
+    def __repr__(self):
+        return self.job.line()
+
+    def _ipython_display_(self):
+        if _execution_count() == self._cell:
+            return
+        if self.job.view is not None:
+            self.job.show()
+        else:
+            print(self.job.line())
+
+
+def _execution_count():
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return None
+    shell = get_ipython()
+    return getattr(shell, 'execution_count', None)
 
 
 def _redirect_job(process, target, mode):
@@ -115,18 +186,22 @@ def load_ipython_extension(ipython):
     compat.activate()
     for name, function in MAGICS.items():
         _register_one(ipython, name, function)
+    if _loaded_into is not ipython:
+        # a line a background process started shows when the cell ends, not later
+        ipython.events.register('post_run_cell', _flush_process_lines)
     _loaded_into = ipython
+
+
+def _flush_process_lines(*_):
+    process = sys.modules.get('labkit.process')   # nothing to do before any process ran
+    if process is not None:
+        process.flush_echo_all()
 
 
 def unload_ipython_extension(ipython):
     global _loaded_into
+    try:
+        ipython.events.unregister('post_run_cell', _flush_process_lines)
+    except ValueError:
+        pass
     _loaded_into = None
-
-
-def _late_magic(name, function):
-    """A magic registered after `%load_ext labkit`: IPython gets it at once."""
-    if _loaded_into is not None:
-        _register_one(_loaded_into, name, function)
-
-
-plugins.on_magic(_late_magic)

@@ -2,11 +2,59 @@
 stored outputs are the ones nbval will compare against.
 
     python -m labkit.tools.execute_notebooks book [more paths...]
+    python -m labkit.tools.execute_notebooks --tidy-only book   # no kernel: tidy only
+
+What is stored is what a reader should see, as a terminal shows it:
+- adjacent pieces of the same stream are one output (a kernel sends a stream in
+  pieces as it flushes; a piece that is only a space is dropped by the HTML
+  build, splitting a CLI line in two);
+- a picture's live widget view is not stored where the output also has a static
+  face (PNG, JPEG, SVG, HTML): the widget's model lives in the kernel, so a
+  stored view only reads "model not found" when the notebook is reopened.
 """
 import os
 import pathlib
 import sys
 import time
+
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+STATIC_FACES = ("image/png", "image/jpeg", "image/svg+xml", "text/html")
+
+
+def coalesce_streams(outputs):
+    """Adjacent stream outputs of the same name merged into one (order kept)."""
+    merged = []
+    for out in outputs:
+        if (out.get("output_type") == "stream" and merged
+                and merged[-1].get("output_type") == "stream"
+                and merged[-1].get("name") == out.get("name")):
+            merged[-1]["text"] = _text(merged[-1]["text"]) + _text(out["text"])
+            continue
+        if out.get("output_type") == "stream":
+            out["text"] = _text(out["text"])
+        merged.append(out)
+    return merged
+
+
+def _text(value):
+    return "".join(value) if isinstance(value, list) else value
+
+
+def drop_live_views(outputs):
+    """Remove widget views from outputs that carry a static face as well."""
+    for out in outputs:
+        data = out.get("data")
+        if data and WIDGET_VIEW in data and any(k in data for k in STATIC_FACES):
+            del data[WIDGET_VIEW]
+    return outputs
+
+
+def tidy(nb):
+    """What execute() applies to a notebook before storing it; returns the notebook."""
+    for cell in nb.cells:
+        if cell.get("cell_type") == "code" and cell.get("outputs"):
+            cell.outputs = coalesce_streams(drop_live_views(cell.outputs))
+    return nb
 
 
 def execute(path, timeout=600):
@@ -17,23 +65,43 @@ def execute(path, timeout=600):
     client = NotebookClient(nb, timeout=timeout, kernel_name="python3",
                             resources={"metadata": {"path": str(path.parent)}})
     client.execute()
-    nbformat.write(nb, path)
+    nbformat.write(tidy(nb), path)
 
 
-def main(argv=None):
-    argv = sys.argv[1:] if argv is None else argv
-    os.environ["LABKIT_TIME"] = "virtual"
-    os.environ.setdefault("TZ", "UTC")
+def tidy_file(path):
+    import nbformat
+    nb = nbformat.read(path, as_version=4)
+    before = nbformat.writes(nb)
+    after = nbformat.writes(tidy(nb))
+    if after != before:
+        path.write_text(after + ("" if after.endswith("\n") else "\n"), encoding="utf-8")
+        return True
+    return False
+
+
+def notebooks(args):
     paths = []
-    for arg in argv or ["book"]:
+    for arg in args or ["book"]:
         p = pathlib.Path(arg)
         if p.suffix == ".ipynb":
             paths.append(p)
         else:
             paths += sorted(q for q in p.rglob("*.ipynb")
                             if "_build" not in q.parts and ".ipynb_checkpoints" not in q.parts)
+    return paths
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if argv[:1] == ["--tidy-only"]:
+        for p in notebooks(argv[1:]):
+            if tidy_file(p):
+                print(f"tidied {p}")
+        return 0
+    os.environ["LABKIT_TIME"] = "virtual"
+    os.environ.setdefault("TZ", "UTC")
     failed = 0
-    for p in paths:
+    for p in notebooks(argv):
         t0 = time.monotonic()
         try:
             execute(p)

@@ -1,10 +1,25 @@
 """Background jobs: `ros2 run`, `topic echo`, `topic hz`, ... keep running after the cell.
 
 Each job is a labkit process (labkit/process.py), so its output goes through
-the process output sink (echoed to the running cell, kept in `Job.output`).
+the process output sink (kept in `Job.output`). Where it shows:
+
+- virtual time (nbval, `make book-exec`) or a script: as plain text in the
+  running cell / the terminal, whole lines at a time;
+- live JupyterLab: in an output area that belongs to the job, displayed in the
+  cell that started it, with its own Stop button; lines printed while no cell
+  runs land there too, never in whatever cell runs next.
+
+Stop a job through the handle the cell got back:
+
+    job = %ros2 run turtlesim turtlesim_node     # (or job = labkit.ros2('run ...'))
+    ...
+    job.stop()
+
 `ros2 jobs` lists the running ones, `ros2 jobs stop <id>|all` stops them.
 Running the very same command line again while it still runs does not start
-a duplicate; `--new` (labkit-only flag) starts another anyway.
+a duplicate (it shows the running job's windows again, live); `--new`
+(labkit-only flag) starts another anyway. Finished jobs are forgotten when the
+next job starts and at `labkit.reset()`.
 """
 import itertools
 import sys
@@ -24,6 +39,7 @@ class Job:
         self.process = process
         self.args = command.split()[1:]
         self._stopped = False
+        self.view = None                # live output area (labkit.viz.job_output.JobView)
 
     @property
     def pid(self):
@@ -71,6 +87,16 @@ class Job:
         self.process.wait(timeout)
         return self.returncode
 
+    def show(self):
+        """Show the job's windows (canvas, keypad) and output area again (live JupyterLab)."""
+        from labkit import process as processes
+        for proc in processes.descendants(self.process):
+            for window in list(proc.windows):
+                window._ipython_display_()
+        if self.view is not None:
+            self.view.show()
+        return self
+
     def line(self):
         return f'[{self.id}] {self.pid} {self.state} {self.command}'
 
@@ -106,27 +132,68 @@ def start(argv, command, starter, new=False):
     if not new:
         running = find_running(command)
         if running is not None:
-            return _completed(
+            result = _completed(
                 argv, 0,
                 f'{running.line()} (already running; `ros2 jobs stop {running.id}` '
                 'stops it, --new starts another)\n')
+            result.job = running
+            if running.view is not None:    # live: the learner gets the window back
+                running.show()
+            return result
+    _forget_finished()
     # Hold back what the program prints while it starts: if it fails at once (a bad
     # type, a crash in __init__) the command ends like a short one, with its error lines.
     held = []
     process = starter(lambda stream, text: held.append((stream, text)))
     settle()  # virtual time: let it run up to its first real wait (or its end)
-    process.sink = None  # from now on the process echoes its own output
+    view = _live_view(command)
     text = {'stdout': '', 'stderr': ''}
     for stream, chunk in held:
         text[stream] += chunk
     if not process.running and process.returncode:
+        process.sink = None
+        if view is not None:
+            view.close()
         return _completed(argv, process.returncode, text['stdout'], text['stderr'])
-    for stream, chunk in held:
-        target = sys.stdout if stream == 'stdout' else sys.stderr
-        target.write(chunk)
     job = Job(next(_ids), command, process)
     _jobs.append(job)
+    if view is not None:
+        view.attach(job)
+        process.view = view
+    process.sink = None  # from now on the process echoes its own output
+    for stream, chunk in _merged(held):
+        # what it printed while starting shows now, before what the cell does next
+        # (as in its terminal), not whenever the kernel's stream buffer is flushed
+        process.echo_text(stream, chunk)
+    if view is not None:
+        view.show()
     return job
+
+
+def _merged(chunks):
+    """Adjacent pieces of the same stream as one (the order of the streams kept)."""
+    merged = []
+    for stream, chunk in chunks:
+        if merged and merged[-1][0] == stream:
+            merged[-1] = (stream, merged[-1][1] + chunk)
+        elif chunk:
+            merged.append((stream, chunk))
+    return merged
+
+
+def _live_view(command):
+    """A job output area, in live JupyterLab only (virtual time prints plain text)."""
+    try:
+        from labkit.viz import job_output
+    except ImportError:
+        return None
+    return job_output.JobView(command) if job_output.enabled() else None
+
+
+def _forget_finished():
+    """A shell forgets a job once it has ended: its process and output are freed
+    (a handle the notebook kept still works)."""
+    _jobs[:] = [j for j in _jobs if j.running()]
 
 
 def start_process(argv, name, target=None, sink=None):
@@ -206,4 +273,16 @@ def jobs_command(argv):
 
 def forget_all():
     """Called when labkit resets: every process is gone."""
+    for job in _jobs:
+        if job.view is not None:
+            job.view.finish()
     _jobs.clear()
+
+
+def _install_reset_hook():
+    from labkit import process
+    if forget_all not in process.reset_hooks:
+        process.reset_hooks.append(forget_all)
+
+
+_install_reset_hook()
