@@ -64,6 +64,9 @@ def reset():
     meshcat_view = sys.modules.get('labkit.viz.meshcat_view')
     if meshcat_view is not None:   # the 3D viewer's live parts (views following /tf)
         meshcat_view.stop_all()
+    daemon = sys.modules.get('labkit.cli.ros2.daemon')
+    if daemon is not None:         # `ros2 daemon status` starts over: not running
+        daemon.reset()
     try:  # live graph views and consoles hold nodes of their own
         from labkit.viz import graph_view
         graph_view.stop_all()

@@ -30,6 +30,7 @@ __all__ = ['run_command', 'CompletedCommand', 'register_noun']
 _NOUNS = plugins.NOUNS
 _NOUNS.update({
     'action': ('labkit.cli.ros2.action', 'Various action related sub-commands'),
+    'daemon': ('labkit.cli.ros2.daemon', 'Various daemon related sub-commands'),
     'interface': ('labkit.cli.ros2.interface', 'Show information about ROS interfaces'),
     'node': ('labkit.cli.ros2.node', 'Various node related sub-commands'),
     'param': ('labkit.cli.ros2.param', 'Various param related sub-commands'),

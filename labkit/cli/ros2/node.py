@@ -1,6 +1,7 @@
 """ros2 node list | info (ros2node)."""
 from labkit.cli.ros2._base import (
     CliNode, add_verbs, is_hidden_name, node_names, split_node_name)
+from labkit.cli.ros2.daemon import strategy
 
 DUPLICATE_WARNING = ('WARNING: Be aware that are nodes in the graph that share an exact name, '
                      'this can have unintended side effects.')
@@ -10,8 +11,8 @@ INFO_NONUNIQUE = ('There are {num_nodes} nodes in the graph with the exact name 
 
 def add_arguments(parser, cli_name):
     add_verbs(parser, cli_name, [
-        ('info', 'Output information about a node', _info_args, info),
-        ('list', 'Output a list of available nodes', _list_args, list_),
+        ('info', 'Output information about a node', *strategy(_info_args, info)),
+        ('list', 'Output a list of available nodes', *strategy(_list_args, list_)),
     ])
 
 

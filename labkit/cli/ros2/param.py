@@ -9,6 +9,7 @@ import yaml
 from labkit.cli.ros2._base import (
     CliError, CliNode, GaveUp, absolute_node_name, add_verbs, node_names, patience,
     service_names_and_types, split_node_name)
+from labkit.cli.ros2.daemon import strategy
 
 SEPARATOR = '.'
 TYPE_NAMES = {1: 'boolean', 2: 'integer', 3: 'double', 4: 'string', 5: 'byte array',
@@ -24,14 +25,15 @@ def _types():
 
 def add_arguments(parser, cli_name):
     add_verbs(parser, cli_name, [
-        ('delete', 'Delete parameter', _delete_args, delete),
+        ('delete', 'Delete parameter', *strategy(_delete_args, delete)),
         ('describe', 'Show descriptive information about declared parameters',
-         _describe_args, describe),
-        ('dump', 'Show all of the parameters of a node in a YAML file format', _dump_args, dump),
-        ('get', 'Get parameter', _get_args, get),
-        ('list', 'Output a list of available parameters', _list_args, list_),
-        ('load', 'Load parameter file for a node', _load_args, load),
-        ('set', 'Set parameter', _set_args, set_),
+         *strategy(_describe_args, describe)),
+        ('dump', 'Show all of the parameters of a node in a YAML file format',
+         *strategy(_dump_args, dump)),
+        ('get', 'Get parameter', *strategy(_get_args, get)),
+        ('list', 'Output a list of available parameters', *strategy(_list_args, list_)),
+        ('load', 'Load parameter file for a node', *strategy(_load_args, load)),
+        ('set', 'Set parameter', *strategy(_set_args, set_)),
     ])
 
 

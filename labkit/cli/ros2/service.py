@@ -2,6 +2,7 @@
 from labkit.cli.ros2._base import (
     NODE_NAME_PREFIX, CliError, CliNode, GaveUp, add_verbs, load_yaml_values, patience,
     service_names_and_types, set_message_fields)
+from labkit.cli.ros2.daemon import strategy
 
 
 def add_arguments(parser, cli_name):
@@ -10,7 +11,7 @@ def add_arguments(parser, cli_name):
     add_verbs(parser, cli_name, [
         ('call', 'Call a service', _call_args, call),
         ('find', 'Output a list of available services of a given type', _find_args, find),
-        ('list', 'Output a list of available services', _list_args, list_),
+        ('list', 'Output a list of available services', *strategy(_list_args, list_)),
         ('type', "Output a service's type", _type_args, type_),
     ])
 

@@ -4,6 +4,7 @@ from labkit.cli.ros2._base import (
     get_message, load_yaml_values, patience, preset_profile, topic_names_and_types,
     unsigned_int)
 from labkit.commands import expand_topic  # noqa: F401  (action.py imports it from here)
+from labkit.cli.ros2.daemon import strategy
 
 DEFAULT_TRUNCATE_LENGTH = 128
 ECHO_DEFAULT_PROFILE = 'sensor_data'
@@ -16,13 +17,14 @@ def add_arguments(parser, cli_name):
     add_verbs(parser, cli_name, [
         ('bw', 'Display bandwidth used by topic', m.bw_arguments, m.bw),
         ('delay', 'Display delay of topic from timestamp in header', m.delay_arguments, m.delay),
-        ('echo', 'Output messages from a topic', _echo_args, echo),
-        ('find', 'Output a list of available topics of a given type', _find_args, find),
+        ('echo', 'Output messages from a topic', *strategy(_echo_args, echo)),
+        ('find', 'Output a list of available topics of a given type',
+         *strategy(_find_args, find)),
         ('hz', 'Print the average publishing rate to screen', m.hz_arguments, m.hz),
-        ('info', 'Print information about a topic', _info_args, info),
-        ('list', 'Output a list of available topics', _list_args, list_),
+        ('info', 'Print information about a topic', *strategy(_info_args, info)),
+        ('list', 'Output a list of available topics', *strategy(_list_args, list_)),
         ('pub', 'Publish a message to a topic', _pub_args, pub),
-        ('type', "Print a topic's type", _type_args, type_),
+        ('type', "Print a topic's type", *strategy(_type_args, type_)),
     ])
 
 
