@@ -112,8 +112,9 @@ def _label(channel: str, msg) -> str:
 class Trace:
     """The events recorded by `record()`, merged and drawn."""
 
-    def __init__(self, prefixes):
+    def __init__(self, prefixes, merge=True):
         self.prefixes = tuple(prefixes)
+        self.merge = merge
         self.events: list[Event] = []
 
     def wants(self, channel: str) -> bool:
@@ -129,7 +130,7 @@ class Trace:
         event = Event(t_ns, kind, channel, src, tuple(sorted(set(dst))), label)
         last = self.events[-1] if self.events else None
         # a stream of the same message (62 feedbacks a second) becomes one arrow "×N"
-        if last is not None and last.key == event.key and kind == "message" \
+        if self.merge and last is not None and last.key == event.key and kind == "message" \
                 and label.split(" ", 1)[0] == last.label.split(" ", 1)[0] \
                 and not channel.endswith("/status"):
             last.count += 1
@@ -197,22 +198,26 @@ class Trace:
                        f'font-size="{FONT:.0f}">{escape(p)}</text>')
         out.append(f'<text x="6" y="{top + 26:.1f}" font-size="{SMALL_FONT:.0f}" fill="#555">时间 (s)</text>')
         t0 = self.events[0].t_ns if self.events else 0
+        active = {n for e in self.events if e.kind != "message" for n in (e.src, *e.dst)}
         for row, e in enumerate(self.events):
             y = top + HEAD + ROW * (row + 0.8)
             out.append(f'<text x="6" y="{y + 4:.1f}" font-size="{SMALL_FONT:.0f}" fill="#555">'
                        f'{(e.t_ns - t0) / 1e9:.3f}</text>')
             x1 = x[e.src]
-            targets = [x[d] for d in e.dst]
-            x2 = max(targets, key=lambda v: abs(v - x1))
+            # a topic reaches every subscriber: one arrow each; the label goes on the arrow to a
+            # node that also takes part in the service calls (the goal's own client), else the farthest
+            primary = next((d for d in e.dst if d in active), max(e.dst, key=lambda d: abs(x[d] - x1)))
             style = {"request": 'stroke="#333" marker-end="url(#seq-head)"',
                      "response": 'stroke="#333" stroke-dasharray="6,4" marker-end="url(#seq-head)"',
                      "message": 'stroke="#b35900" marker-end="url(#seq-open)"'}[e.kind]
-            if abs(x2 - x1) < 1:        # a node talking to itself: a small loop
-                out.append(f'<path d="M{x1:.1f},{y - 6:.1f} h24 v12 h-24" fill="none" {style}/>')
-            else:
-                out.append(f'<line x1="{x1:.1f}" y1="{y:.1f}" x2="{x2:.1f}" y2="{y:.1f}" '
-                           f'stroke-width="1.4" {style}/>')
-            mid = (x1 + x2) / 2
+            for d in e.dst:
+                x2 = x[d]
+                if abs(x2 - x1) < 1:        # a node talking to itself: a small loop
+                    out.append(f'<path d="M{x1:.1f},{y - 6:.1f} h24 v12 h-24" fill="none" {style}/>')
+                else:
+                    out.append(f'<line x1="{x1:.1f}" y1="{y:.1f}" x2="{x2:.1f}" y2="{y:.1f}" '
+                               f'stroke-width="1.4" {style}/>')
+            mid = (x1 + x[primary]) / 2
             colour = "#b35900" if e.kind == "message" else "#111"
             out.append(f'<text x="{mid:.1f}" y="{y - 5:.1f}" text-anchor="middle" font-size="{FONT:.0f}" '
                        f'fill="{colour}">{escape(self._arrow_text(e))}</text>')
@@ -239,18 +244,19 @@ _PARAM_SERVICES = {"describe_parameters", "get_parameter_types", "get_parameters
 
 
 @contextmanager
-def record(*prefixes: str):
+def record(*prefixes: str, merge: bool = True):
     """Note every service call and topic message under these name prefixes while the block runs.
 
     Without prefixes everything is noted except /rosout, /parameter_events and the
-    parameter services every node has."""
+    parameter services every node has. With `merge` (the default) a run of the same
+    message stream (feedback at 62 Hz) is one arrow marked ×N; `merge=False` keeps each."""
     from labkit.graph import world
     from labkit.graph.registry import GRAPH, SUB
     from labkit.rclpy.client import Client
     from labkit.rclpy.publisher import Publisher
     from labkit.rclpy.service import Service
 
-    trace = Trace(prefixes)
+    trace = Trace(prefixes, merge)
     send, respond, publish = Client._send, Service.send_response, Publisher.publish
 
     def traced_send(self, request):

@@ -86,6 +86,10 @@ def test_only_the_named_channels_and_only_real_readers(nodes):
     event = trace.events[0]
     assert (event.kind, event.src, event.dst, event.count) == ("message", "/talker", ("/listener",), 3)
     assert "hi 0" in trace.text() and "hi 2" in trace.text() and "(×3)" in trace.text()
+    with record("/chatter", merge=False) as each:
+        for i in range(3):
+            pub.publish(String(data=f"hi {i}"))
+    assert [e.label for e in each.events] == ["{data: 'hi 0'}", "{data: 'hi 1'}", "{data: 'hi 2'}"]
 
 
 def test_an_action_goal_with_feedback_and_a_cancel():
@@ -131,3 +135,16 @@ def test_the_figure_is_the_column_wide_and_its_labels_legible(nodes):
     fonts = [float(x) for x in re.findall(r'font-size="([\d.]+)"', svg)]
     assert label_px_in_column(width_pt, min(fonts)) >= MIN_LABEL_PX
     assert "{a: 40, b: 2}" in svg and "{sum: 42}" in svg and "/asker" in svg
+
+
+def test_a_message_to_two_subscribers_draws_an_arrow_to_each(nodes):
+    talker, left, right = nodes("talker"), nodes("left"), nodes("right")
+    pub = talker.create_publisher(String, "chatter", 10)
+    for n in (left, right):
+        n.create_subscription(String, "chatter", lambda msg: None, 10)
+    with record("/chatter") as trace:
+        pub.publish(String(data="hello"))
+    assert trace.events[0].dst == ("/left", "/right")
+    svg = trace.svg()
+    assert svg.count('marker-end="url(#seq-open)"') == 2
+    assert svg.count("hello") == 1
