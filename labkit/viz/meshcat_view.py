@@ -8,9 +8,13 @@ Two faces:
   and base64-inlined, unpacked by the browser): no server, works in the HTML
   book. `animate()` adds a meshcat animation (e.g. the walking r2d2).
 - live: `RobotView.follow()` starts a hidden process whose node subscribes
-  /tf and /tf_static (and /robot_description) and moves the scene;
-  `serve()` starts a tiny viewer server bound to 127.0.0.1 only (meshcat's own
-  server listens on every interface, so it is not used).
+  /tf and /tf_static (and /robot_description) and moves the scene. In JupyterLab
+  `show()` displays a widget (labkit/viz/meshcat_widget.py) that gets the scene
+  through the kernel's own comm, so it works wherever JupyterLab's server runs;
+  the static face goes in the same output. Outside Jupyter, `serve()` starts a
+  tiny page server on 127.0.0.1 only (meshcat's own listens on every interface):
+  it answers only its own Host and Origin, and its page stops polling when the
+  server is gone.
 
 The scene is kept as meshcat commands (msgpack), exactly what meshcat's own
 server would replay to a browser.
@@ -42,13 +46,19 @@ def _viewer_js_gz():
         return base64.b64encode(gzip.compress(handle.read(), 9, mtime=0)).decode("ascii")
 
 
-def _pack(commands):
+def _command_blob(command):
+    """One meshcat command as the viewer reads it: a length prefix and its msgpack."""
     import umsgpack
-    out = bytearray()
-    for command in commands:
-        blob = umsgpack.packb(command, force_float_precision="single")
-        out += struct.pack("<I", len(blob)) + blob
-    return base64.b64encode(gzip.compress(bytes(out), 9, mtime=0)).decode("ascii")
+    blob = umsgpack.packb(command, force_float_precision="single")
+    return struct.pack("<I", len(blob)) + blob
+
+
+def commands_blob(commands):
+    return b"".join(_command_blob(command) for command in commands)
+
+
+def _pack(commands):
+    return base64.b64encode(gzip.compress(commands_blob(commands), 9, mtime=0)).decode("ascii")
 
 
 # The page unpacks the viewer and the scene with the browser's DecompressionStream.
@@ -212,6 +222,7 @@ class RobotView:
         self._tf = {}             # child -> (parent, 4x4) from /tf and /tf_static
         self._process = None
         self._server = None
+        self._widget = None
         if model is not None:
             self.set_model(model)
 
@@ -318,28 +329,34 @@ class RobotView:
                 out.append(self._animation)
         return out
 
-    def html(self, live_url=None):
-        """A self-contained meshcat page of the scene (optionally polling a live server)."""
-        live = ""
-        if live_url:
-            live = _LIVE_JS.replace("URL", live_url)
-        return _PAGE.format(js=_viewer_js_gz(), scene=_pack(self.commands()), live=live)
+    def html(self, live=False):
+        """A self-contained meshcat page of the scene (`live`: it polls the page server
+        that served it, see `serve()`)."""
+        return _PAGE.format(js=_viewer_js_gz(), scene=_pack(self.commands()),
+                            live=_LIVE_JS if live else "")
 
-    def iframe(self, height=None, live_url=None):
+    def iframe(self, height=None):
         """`<iframe srcdoc=...>`: the static snapshot the notebook stores."""
         height = height or self.height
         return ('<iframe srcdoc="{}" style="width:100%;height:{}px;border:none" '
-                'title="meshcat"></iframe>').format(_html.escape(self.html(live_url), quote=True),
+                'title="meshcat"></iframe>').format(_html.escape(self.html(), quote=True),
                                                     height)
 
     def _repr_html_(self):
-        if self._server is not None:
-            return self.iframe(live_url=self._server.url)
         return self.iframe()
 
+    def widget(self):
+        """The live widget of this view (made once); scene changes reach it as they happen."""
+        if self._widget is None:
+            from labkit.viz.meshcat_widget import MeshcatWidget
+            self._widget = MeshcatWidget(self)
+            _live.add(self)
+        return self._widget
+
     def show(self, live=None):
-        """Display the view. live=None: a live page (127.0.0.1 server) when labkit runs in
-        live time inside a kernel, else the static snapshot (what the book stores)."""
+        """Display the view. live=None: the live widget (the static snapshot in the same
+        output) when labkit runs in live time inside a kernel, else the static snapshot
+        alone (what the book stores)."""
         from IPython.display import display
         if live is None:
             import labkit
@@ -348,7 +365,9 @@ class RobotView:
             live = (labkit.time_mode() == "live" and shell is not None
                     and getattr(shell, "kernel", None) is not None)
         if live:
-            self.serve()
+            from labkit.viz import display as _display
+            _display.show(self.widget(), html=self.iframe(), text="<meshcat view>")
+            return
         # raw HTML: IPython's HTML() warns about every "<iframe" ("Consider using IFrame")
         display({"text/html": self._repr_html_()}, raw=True)
 
@@ -365,15 +384,21 @@ class RobotView:
         def main(args=None):
             _follow_main(view, args)
         self._process = process.start(main=main, name="labkit_meshcat_view", echo=False)
+        _live.add(self)
         return self._process
 
     def stop(self):
+        """Stop following /tf, close the page server; a live widget keeps its last scene."""
         if self._process is not None:
             self._process.stop()
             self._process = None
         if self._server is not None:
             self._server.close()
             self._server = None
+        if self._widget is not None:
+            self._widget.detach()
+            self._widget = None
+        _live.discard(self)
 
     def on_tf(self, transforms):
         """Take a list of TransformStamped, recompute every frame's pose in the fixed frame."""
@@ -408,14 +433,20 @@ class RobotView:
 
     # -- live page server --------------------------------------------------------------
     def serve(self, port=0):
-        """Serve a live page at http://127.0.0.1:<port>/ (127.0.0.1 only); returns the URL."""
+        """Serve a live page at http://127.0.0.1:<port>/ (127.0.0.1 only) for a browser
+        outside Jupyter; returns the URL. `stop()` or `labkit.reset()` closes it."""
         if self._server is None:
             self._server = _LiveServer(self, port)
+            _live.add(self)
         return self._server.url
 
     def _push(self, commands):
-        if self._server is not None and commands:
+        if not commands:
+            return
+        if self._server is not None:
             self._server.push(commands)
+        if self._widget is not None:
+            self._widget.push(commands)
 
     def _camera(self):
         """Put meshcat's camera at a distance that fits the robot (meshcat's is Y-up)."""
@@ -428,12 +459,15 @@ class RobotView:
                 "property": "position", "value": [d, 0.6 * d, d * 0.8]}
 
 
-# The live page polls the server for new commands (no websocket needed).
+# The served page polls its own server for new commands (no websocket needed). When the
+# server is gone (labkit.reset(), the kernel ended) it retries a few times, more and more
+# slowly, then stops for good: no console full of refused connections.
 _LIVE_JS = """
-  var seq = 0;
+  var seq = 0, failures = 0;
   async function poll() {
     try {
-      var r = await fetch("URL/updates?since=" + seq);
+      var r = await fetch("updates?since=" + seq);
+      if (!r.ok) throw new Error(r.status);
       seq = parseInt(r.headers.get("X-Seq") || seq);
       var cmds = new Uint8Array(await r.arrayBuffer()), dv = new DataView(cmds.buffer), j = 0;
       while (j < cmds.length) {
@@ -441,8 +475,15 @@ _LIVE_JS = """
         viewer.handle_command_bytearray(cmds.subarray(j + 4, j + 4 + m));
         j += 4 + m;
       }
-    } catch (e) {}
-    setTimeout(poll, 50);
+      failures = 0;
+    } catch (e) {
+      failures += 1;
+      if (failures >= 4) {
+        document.title = "MeshCat (stopped)";
+        return;
+      }
+    }
+    setTimeout(poll, failures ? 500 * Math.pow(2, failures) : 50);
   }
   poll();
 """
@@ -535,11 +576,16 @@ def _follow_main(view, args=None, node_name="labkit_meshcat_view"):
 
 class _LiveServer:
     """A tiny HTTP server on 127.0.0.1 (never another interface): `/` is the page,
-    `/updates?since=N` the commands that changed since sequence N."""
+    `/updates?since=N` the commands that changed since sequence N.
+
+    Loopback is not enough (any web page the browser shows may send requests to it, and
+    a DNS-rebinding name may point at it): it answers only requests whose Host is its own
+    address and whose Origin, if any, is its own page; it sends no CORS header, so no
+    other page may read its answers. Bad requests get a bare status, and nothing is
+    printed into the notebook."""
 
     def __init__(self, view, port=0):
         import http.server
-        import urllib.parse
         self.view = view
         self._seq = 0
         self._latest = {}                 # path -> (seq, packed command)
@@ -551,40 +597,59 @@ class _LiveServer:
                 pass
 
             def do_GET(self):
-                url = urllib.parse.urlparse(self.path)
-                if url.path == "/updates":
-                    since = int(urllib.parse.parse_qs(url.query).get("since", ["0"])[0])
-                    seq, body = server.updates(since)
-                    ctype = "application/octet-stream"
-                elif url.path in ("/", "/index.html"):
-                    seq, body = server._seq, view.html(live_url=server.url).encode("utf-8")
-                    ctype = "text/html; charset=utf-8"
-                else:
-                    self.send_error(404)
-                    return
-                self.send_response(200)
-                self.send_header("Content-Type", ctype)
-                self.send_header("X-Seq", str(seq))
-                self.send_header("Access-Control-Allow-Origin", "*")
-                self.send_header("Access-Control-Expose-Headers", "X-Seq")
+                status, headers, body = server.answer(self.path, self.headers)
+                self.send_response(status)
+                for key, value in headers:
+                    self.send_header(key, value)
+                self.send_header("Content-Length", str(len(body)))
                 self.send_header("Cache-Control", "no-store")
                 self.end_headers()
                 self.wfile.write(body)
 
-        self.httpd = http.server.ThreadingHTTPServer(("127.0.0.1", port), Handler)
-        self.httpd.daemon_threads = True
-        self.url = f"http://127.0.0.1:{self.httpd.server_address[1]}"
+        class Server(http.server.ThreadingHTTPServer):
+            daemon_threads = True
+
+            def handle_error(self, request, client_address):
+                pass                          # a broken connection is not the reader's news
+
+        self.httpd = Server(("127.0.0.1", port), Handler)
+        self.port = self.httpd.server_address[1]
+        self.url = f"http://127.0.0.1:{self.port}"
         self._thread = threading.Thread(target=self.httpd.serve_forever,
                                         name="labkit-meshcat-server", daemon=True)
         self._thread.start()
 
+    def _allowed(self, headers):
+        hosts = {f"127.0.0.1:{self.port}", f"localhost:{self.port}"}
+        if headers.get("Host") not in hosts:
+            return False
+        origin = headers.get("Origin")
+        return origin is None or origin in {f"http://{h}" for h in hosts}
+
+    def answer(self, path, headers):
+        """(status, headers, body) for a GET of `path`."""
+        import urllib.parse
+        text = [("Content-Type", "text/plain; charset=utf-8")]
+        if not self._allowed(headers):
+            return 403, text, b"Forbidden\n"
+        url = urllib.parse.urlparse(path)
+        if url.path == "/updates":
+            since = urllib.parse.parse_qs(url.query).get("since", ["0"])
+            if len(since) != 1 or not since[0].isdigit():
+                return 400, text, b"Bad Request\n"
+            seq, body = self.updates(int(since[0]))
+            return 200, [("Content-Type", "application/octet-stream"),
+                         ("X-Seq", str(seq))], body
+        if url.path in ("/", "/index.html"):
+            return 200, [("Content-Type", "text/html; charset=utf-8")], \
+                self.view.html(live=True).encode("utf-8")
+        return 404, text, b"Not Found\n"
+
     def push(self, commands):
-        import umsgpack
         with self._cond:
             for command in commands:
                 self._seq += 1
-                blob = umsgpack.packb(command, force_float_precision="single")
-                self._latest[command["path"]] = (self._seq, struct.pack("<I", len(blob)) + blob)
+                self._latest[command["path"]] = (self._seq, _command_blob(command))
 
     def updates(self, since):
         with self._cond:
