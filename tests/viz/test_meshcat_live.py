@@ -139,3 +139,22 @@ def test_widget_script_is_a_module_that_never_polls():
         done = subprocess.run([node, "--input-type=module", "--check"], input=text,
                               capture_output=True, text=True)
         assert done.returncode == 0, done.stderr
+
+
+def test_labkit_reset_leaves_no_thread_and_rclpy_shutdown_after_it_is_fine():
+    before = set(threading.enumerate())
+    labkit.ros2('run turtlesim turtlesim_node')
+    labkit.ros2('topic echo /turtle1/pose')
+    labkit.ros2('run rviz2 rviz2')
+    view = meshcat_view.RobotView(URDF)
+    view.follow()
+    view.serve()
+    view.widget()
+    import labkit.rclpy as rclpy
+    rclpy.init(args=[])
+    rclpy.create_node('notebook_node')
+    labkit.sleep(0.5)
+    assert len(set(threading.enumerate()) - before) >= 5
+    labkit.reset()
+    assert [t.name for t in set(threading.enumerate()) - before] == []
+    rclpy.shutdown()               # the notebook's last cell after a reset: no error
