@@ -10,7 +10,8 @@ where), longest first, and exits 1 when a run reaches --limit characters (defaul
 
 Whitespace is compared loosely by default (every run of spaces, tabs and newlines counts
 as one space, so a file indented into an .rst code block still matches); --exact turns
-that off. Lengths are counted in the texts as compared.
+that off. Import lines are excepted by the rule, so --skip-imports leaves out every
+`import x` / `from x import y` line on both sides before comparing. Lengths are counted in the texts as compared.
 
 How: every window of ANCHOR characters of ours goes into a dict; the references are
 scanned window by window; each hit is grown both ways to the full common run. A run of
@@ -19,6 +20,7 @@ length >= ANCHOR always contains a whole window, so nothing of that length is mi
 import argparse
 import json
 import os
+import re
 import sys
 
 ANCHOR = 40
@@ -48,6 +50,14 @@ def our_texts(paths):
             except (UnicodeDecodeError, OSError):
                 pass
     return out
+
+
+IMPORT = re.compile(r'^[ \t]*(from[ \t]+\S+[ \t]+)?import[ \t].*$', re.M)
+
+
+def without_imports(text):
+    """The text with its Python import lines blanked out."""
+    return IMPORT.sub('', text)
 
 
 def squeeze(text):
@@ -104,11 +114,15 @@ def main(argv=None):
     parser.add_argument('--limit', type=int, default=200)
     parser.add_argument('--show', action='store_true', help='print each run found')
     parser.add_argument('--exact', action='store_true', help='compare whitespace exactly')
+    parser.add_argument('--skip-imports', action='store_true', help='leave out import lines')
     parser.add_argument('--ref', nargs='+', required=True, help='folders of reference sources')
     parser.add_argument('ours', nargs='+', help='notebooks, files or folders of ours')
     args = parser.parse_args(argv)
     ours = our_texts(args.ours)
     references = reference_files(args.ref)
+    if args.skip_imports:
+        ours = [(label, without_imports(text)) for label, text in ours]
+        references = ((name, without_imports(text)) for name, text in references)
     if not args.exact:
         ours = [(label, squeeze(text)) for label, text in ours]
         references = ((name, squeeze(text)) for name, text in references)

@@ -71,11 +71,21 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
     _load = staticmethod(get_launch_description_from_python_launch_file)
 
     def try_get_launch_description_without_context(self):
-        from labkit.launch.utilities import is_a_substitution
-        if self._launch_description is None and not is_a_substitution(self._path):
+        """As Humble: expand the path in a fresh LaunchContext (FindPackageShare and
+        PathJoinSubstitution need no launch configuration) and load it; a path that
+        needs one, or any other failure, gives None (`--show-args` leaves it out)."""
+        if self._launch_description is not None:
+            return self._launch_description
+        from labkit.launch.launch_context import LaunchContext
+        from labkit.launch.utilities import is_a_substitution, perform
+        if not is_a_substitution(self._path):
             self._location = self._path if isinstance(self._path, str) else ''.join(self._path)
             self._launch_description = self._load(self._location)
-        return self._launch_description
+            return self._launch_description
+        try:
+            return self._load(perform(LaunchContext(), self._path))
+        except Exception:
+            return None
 
 
 class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):

@@ -35,3 +35,18 @@ def test_finds_the_whole_shared_run_through_indentation(tmp_path):
     exact = longest_run.longest_runs(texts, list(longest_run.reference_files([str(ref)])))
     assert exact[str(ours)][0] < len(shared)
     assert longest_run.main(["--ref", str(ref), "--limit", "60", str(ours)]) == 1
+
+
+def test_import_lines_can_be_left_out(tmp_path):
+    imports = ("from launch import LaunchDescription\nfrom launch.actions import "
+               "DeclareLaunchArgument, IncludeLaunchDescription, TimerAction\n"
+               "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution\n")
+    ref = tmp_path / "ref"
+    ref.mkdir()
+    (ref / "theirs.py").write_text(imports + "\n\ndef theirs():\n    return 1\n")
+    ours = tmp_path / "ours.py"
+    ours.write_text(imports + "\n\ndef ours():\n    return 2\n")
+    assert longest_run.main(["--ref", str(ref), "--limit", "150", str(ours)]) == 1
+    assert longest_run.main(["--ref", str(ref), "--limit", "150", "--skip-imports",
+                             str(ours)]) == 0
+    assert "import" not in longest_run.without_imports(imports).strip()
