@@ -77,14 +77,22 @@ def info(args, io):
 # --------------------------------------------------------------------------- reindex
 
 def reindex(args, io):
-    """Rebuild metadata.yaml from the bag's sqlite3 files (a recording that was killed)."""
+    """Rebuild metadata.yaml from the bag's files (a recording that was killed); an mcap
+    file cut short by the kill is first rewritten whole from its complete chunks."""
+    from labkit.bag.mcap_file import recover
     from labkit.bag.metadata import METADATA_FILENAME, write_metadata
-    from labkit.bag.storage import BagError, read_bag_metadata
+    from labkit.bag.storage import BagError, read_bag_metadata, storage_files
     if not os.path.isdir(args.bag_path):
         return print_error('Must specify a bag directory')
     stale = os.path.join(args.bag_path, METADATA_FILENAME)
     if os.path.exists(stale):
         os.remove(stale)
+    for name in storage_files(args.bag_path):
+        if name.endswith('.mcap'):
+            try:
+                recover(os.path.join(args.bag_path, name))
+            except (OSError, ValueError):
+                return 'No storage could be initialized from the inputs.'
     try:
         metadata = read_bag_metadata(args.bag_path, args.storage)
     except BagError as e:

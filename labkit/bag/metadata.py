@@ -122,8 +122,33 @@ def write_metadata(directory, m):
     os.replace(tmp, path)  # a reader never sees half a file
 
 
+class MetadataError(RuntimeError):
+    """A metadata.yaml that cannot be read: rosbag2's one line."""
+
+
+def _yaml_cpp_what(error):
+    """What yaml-cpp's exception would say (rosbag2 prints its what())."""
+    import yaml
+    if isinstance(error, KeyError):       # InvalidNode: no mark
+        return f'invalid node; first invalid key: "{error.args[0]}"'
+    mark = getattr(error, 'problem_mark', None)
+    if isinstance(error, yaml.MarkedYAMLError) and mark is not None:
+        problem = error.problem or error.context or 'parse error'
+        return f'yaml-cpp: error at line {mark.line + 1}, column {mark.column + 1}: {problem}'
+    return 'yaml-cpp: error at line 0, column 0: bad conversion'
+
+
 def read_metadata(directory):
     """Parse metadata.yaml (versions 1-9 as far as Humble's fields go)."""
+    try:
+        return _read_metadata(directory)
+    except OSError:
+        raise
+    except Exception as e:  # yaml errors, missing keys, wrong types: rosbag2's one line
+        raise MetadataError(f'Exception on parsing info file: {_yaml_cpp_what(e)}') from None
+
+
+def _read_metadata(directory):
     import yaml
     with open(os.path.join(directory, METADATA_FILENAME)) as f:
         node = yaml.safe_load(f)['rosbag2_bagfile_information']

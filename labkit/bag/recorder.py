@@ -7,7 +7,14 @@ import re
 
 from labkit.commands import CliNode, is_hidden_name
 
-DEFAULT_DEPTH = 10  # Rosbag2QoS: rmw_qos_profile_default's depth
+# Humble's recorder asks for KEEP_LAST 10 (Rosbag2QoS: rmw_qos_profile_default's depth): its DDS reader is fed by the middleware's own
+# threads and its callback runs on a CPU of its own, so it keeps up at 1 kHz. labkit's
+# processes share one interpreter: a recorder thread that waits 20 ms for its turn would
+# lose messages a real recorder never loses. A subscription's history is not part of
+# discovery (`ros2 topic info -v` shows UNKNOWN, as on Humble), so the recorder keeps a
+# deeper queue without anyone seeing a difference; the cache behind it is bounded by
+# --max-cache-size, as in rosbag2.
+INTAKE_DEPTH = 10000
 _INFINITE = (2147483647, 4294967295)
 
 
@@ -41,7 +48,7 @@ def subscription_qos(infos):
     """adapt_request_to_offers: reliable/transient only when every publisher offers it."""
     from labkit.rclpy.qos import (
         DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy)
-    profile = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=DEFAULT_DEPTH)
+    profile = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=INTAKE_DEPTH)
     if infos and any(i.qos_profile.reliability != ReliabilityPolicy.RELIABLE for i in infos):
         profile.reliability = ReliabilityPolicy.BEST_EFFORT
     if infos and all(i.qos_profile.durability == DurabilityPolicy.TRANSIENT_LOCAL
@@ -119,7 +126,8 @@ class Recorder:
             log = node.get_logger()
             log.info('Press SPACE for pausing/resuming')
             self.requested = [expand_topic(node, t) for t in (a.topics or [])]
-            self.bag = BagWriter(a.output, a.storage, a.max_bag_size, a.max_bag_duration)
+            self.bag = BagWriter(a.output, a.storage, a.max_bag_size, a.max_bag_duration,
+                                 a.max_cache_size)
             try:
                 log.info('Listening for topics...')
                 log.info('Event publisher thread: Starting')
@@ -159,9 +167,6 @@ class Recorder:
                     node.destroy_subscription(sub)
                 except Exception:
                     pass
-        from labkit.rclpy.logging import get_logger
-        get_logger('rosbag2_cpp').info(
-            'Writing remaining messages from cache to the bag. It may take a while')
-        self.bag.close()
+        self.bag.close()   # (logs rosbag2_cpp's "Writing remaining messages ..." line)
         log.info('Event publisher thread: Exiting')
         log.info('Recording stopped')

@@ -1,4 +1,4 @@
-"""Bag storage: Humble's sqlite3 plugin (schema 3) written here, mcap through `rosbags`.
+"""Bag storage: Humble's sqlite3 plugin (schema 3) and mcap plugin (mcap_file.py).
 
 A bag is a folder `<name>/` with `<name>_0.db3` (or `.mcap`) and `metadata.yaml`.
 The sqlite3 writer writes through and commits in small batches, so a recording
@@ -6,11 +6,13 @@ whose process dies keeps what it had written; metadata.yaml comes at close().
 """
 import os
 import sqlite3
+import struct
+import threading
 import time
 
 from labkit.bag.metadata import (
-    METADATA_FILENAME, BagMetadata, FileInformation, TopicInformation, TopicMetadata,
-    directory_size, read_metadata, write_metadata)
+    METADATA_FILENAME, BagMetadata, FileInformation, MetadataError, TopicInformation,
+    TopicMetadata, directory_size, read_metadata, write_metadata)
 
 DEFAULT_STORAGE_ID = 'sqlite3'
 STORAGE_IDS = ('sqlite3', 'mcap')
@@ -18,7 +20,8 @@ EXTENSIONS = {'sqlite3': '.db3', 'mcap': '.mcap'}
 SQLITE_SCHEMA_VERSION = 3   # Humble's kDBSchemaVersion_
 COMMIT_EVERY_MESSAGES = 1000
 COMMIT_EVERY_SECONDS = 0.2     # wall time: what a dying kernel may lose at most
-MIN_SPLIT_FILE_SIZE = 86016     # Humble's sqlite3 plugin minimum
+MIN_SPLIT_FILE_SIZE = {'sqlite3': 86016, 'mcap': 1024}   # each Humble plugin's minimum
+CACHE_WAIT_SECONDS = 0.1       # the writer thread looks at least this often (mcap chunk age)
 METADATA_EVERY_SECONDS = 0.5   # metadata.yaml follows the committed batches (see read)
 
 _SCHEMA = (
@@ -82,6 +85,10 @@ class _SqliteFile:
             return True
         return False
 
+    def tick(self):
+        if self._rows and time.monotonic() - self._last_commit >= COMMIT_EVERY_SECONDS:
+            self.commit()
+
     def commit(self):
         rows, self._rows = self._rows, []
         if rows:
@@ -105,36 +112,36 @@ class _SqliteFile:
 
 
 class _McapFile:
-    """mcap through rosbags (its own metadata.yaml is replaced by Humble's at close)."""
+    """Humble's mcap plugin (labkit/bag/mcap_file.py): `<name>_<n>.mcap`, complete chunks as
+    it goes."""
 
-    def __init__(self, directory):
-        from rosbags.rosbag2 import StoragePlugin, Writer
-        os.rmdir(directory)  # rosbags makes the folder itself
-        self.writer = Writer(directory, version=8, storage_plugin=StoragePlugin.MCAP)
-        self.writer.open()
-        self.connections = {}
-        self.path = None
+    def __init__(self, path):
+        from labkit.bag.mcap_file import McapWriter
+        self.path = path
+        self.writer = McapWriter(path, os.environ.get('ROS_DISTRO', 'humble'))
 
     def create_topic(self, t):
-        from labkit.bag.typestore import typestore_for
-        conn = self.writer.add_connection(t.name, t.type, typestore=typestore_for(t.type),
-                                          serialization_format=t.serialization_format)
-        self.connections[conn.id] = conn
-        return conn.id
+        return self.writer.add_channel(t.name, t.type, t.serialization_format,
+                                       t.offered_qos_profiles)
 
     def write(self, topic_id, timestamp, data):
-        self.writer.write(self.connections[topic_id], timestamp, bytes(data))
+        self.writer.write(topic_id, timestamp, bytes(data))
         return False
 
+    def tick(self):
+        self.writer.flush_if_old()
+
     def commit(self):
-        pass
+        self.writer.flush()
+
+    def settle(self):
+        self.writer.flush()
+
+    def size(self):
+        return self.writer.size()
 
     def close(self):
         self.writer.close()
-        # rosbags names the file `<name>.mcap`; rosbag2 names it `<name>_0.mcap`
-        made = [p for p in os.listdir(self.writer.path) if p.endswith('.mcap')][0]
-        self.path = f'{self.writer.path.name}_0.mcap'
-        os.replace(self.writer.path / made, self.writer.path / self.path)
 
 
 class _FileStats:
@@ -159,22 +166,73 @@ class _FileStats:
         return FileInformation(self.path, self.start, self.end - self.start, self.count)
 
 
-class BagWriter:
-    """rosbag2_cpp's SequentialWriter (no cache): write-through files, metadata at close().
+class MessageCache:
+    """rosbag2_cpp's message cache: callbacks push into one buffer while the writer thread
+    empties the other (they swap). A buffer holding `max_bytes` or more drops what comes
+    next until the swap, counting per topic; close() reports the losses as rosbag2 does."""
 
-    max_bagfile_size (bytes) / max_bagfile_duration (s) split a sqlite3 bag into
+    def __init__(self, max_bytes):
+        self.max_bytes = max_bytes
+        self.cond = threading.Condition()
+        self.buffer = []
+        self.bytes = 0
+        self.full = False
+        self.flushing = False
+        self.dropped = {}          # topic -> messages lost
+
+    def push(self, topic, data, timestamp):
+        with self.cond:
+            if self.full:
+                self.dropped[topic] = self.dropped.get(topic, 0) + 1
+            else:
+                self.buffer.append((topic, data, timestamp))
+                self.bytes += len(data)
+                self.full = self.bytes >= self.max_bytes
+            self.cond.notify()
+
+    def swap(self, timeout):
+        """The writer thread's turn: everything pushed so far (waits up to `timeout` for it)."""
+        with self.cond:
+            if not self.buffer and not self.flushing:
+                self.cond.wait(timeout)
+            batch, self.buffer, self.bytes, self.full = self.buffer, [], 0, False
+            return batch
+
+    def begin_flushing(self):
+        with self.cond:
+            self.flushing = True
+            self.cond.notify()
+
+    def log_dropped(self):
+        from labkit.rclpy.logging import get_logger
+        lost = {t: n for t, n in self.dropped.items() if n}
+        if lost:
+            text = 'Cache buffers lost messages per topic: ' + ''.join(
+                f'\n\t{t}: {n}' for t, n in lost.items())
+            get_logger('rosbag2_cpp').warn(f'{text}\nTotal lost: {sum(lost.values())}')
+
+
+class BagWriter:
+    """rosbag2_cpp's SequentialWriter: storage files, metadata.yaml at close().
+
+    With `max_cache_size` (bytes, the recorder's --max-cache-size) writes go through a
+    MessageCache to a writer thread of their own, as in rosbag2: a subscription callback
+    only appends, so a slow disk or a big commit never holds up the recording. Without
+    it (rosbag2_py's default, 0) each write goes straight to the file.
+
+    max_bagfile_size (bytes) / max_bagfile_duration (s) split a bag into
     `<name>_0.db3`, `<name>_1.db3`, ... like Humble.
     """
 
-    def __init__(self, uri, storage_id='', max_bagfile_size=0, max_bagfile_duration=0):
+    def __init__(self, uri, storage_id='', max_bagfile_size=0, max_bagfile_duration=0,
+                 max_cache_size=0):
         storage_id = storage_id or DEFAULT_STORAGE_ID
         if storage_id not in STORAGE_IDS:
             raise BagError("No storage could be initialized. Abort")
-        if (max_bagfile_size or max_bagfile_duration) and storage_id != 'sqlite3':
-            raise BagError('labkit: bag splitting works with the sqlite3 storage only')
-        if max_bagfile_size and max_bagfile_size < MIN_SPLIT_FILE_SIZE:
+        minimum = MIN_SPLIT_FILE_SIZE[storage_id]
+        if max_bagfile_size and max_bagfile_size < minimum:
             raise BagError('Invalid bag splitting size given. Please provide a value greater '
-                           f'than {MIN_SPLIT_FILE_SIZE}. Specified value of {max_bagfile_size}')
+                           f'than {minimum}. Specified value of {max_bagfile_size}')
         uri = os.fspath(uri).rstrip('/') or '.'
         if os.path.isdir(uri):
             raise BagError(f"Database directory already exists ({uri}), "
@@ -192,16 +250,23 @@ class BagWriter:
         self.topics = {}   # name -> [topic id in the current file, TopicInformation]
         self.closed = False
         self._metadata_written = 0.0
+        self._lock = threading.RLock()      # the storage file: writer thread vs create_topic
         self._open_file()
+        self.cache = None
+        if max_cache_size > 0:
+            self.cache = MessageCache(max_cache_size)
+            self._consumer = threading.Thread(target=self._consume, daemon=True,
+                                              name=f'rosbag2 writer {self.base}')
+            self._consumer.start()
 
     def _open_file(self):
         relative = f'{self.base}_{len(self.files)}{EXTENSIONS[self.storage_id]}'
         if self.storage_id == 'sqlite3':
             self.file = _SqliteFile(os.path.join(self.uri, relative))
-        else:
-            self.file = _McapFile(self.uri)
+            storage_log(f"Opened database '{os.path.join(self.uri, relative)}' for READ_WRITE.")
+        else:  # (Humble's mcap plugin logs no line when it opens a file)
+            self.file = _McapFile(os.path.join(self.uri, relative))
         self.files.append(_FileStats(relative))
-        storage_log(f"Opened database '{os.path.join(self.uri, relative)}' for READ_WRITE.")
         for entry in self.topics.values():  # every file describes every topic
             entry[0] = self.file.create_topic(entry[1].topic_metadata)
 
@@ -210,14 +275,16 @@ class BagWriter:
         return self.files[-1].path
 
     def create_topic(self, topic):
-        if topic.name in self.topics:
-            return
-        self.topics[topic.name] = [self.file.create_topic(topic),
-                                   TopicInformation(topic, 0)]
-        self._refresh_metadata()
+        with self._lock:
+            if topic.name in self.topics:
+                return
+            self.topics[topic.name] = [self.file.create_topic(topic),
+                                       TopicInformation(topic, 0)]
+            self._refresh_metadata()
 
     def remove_topic(self, topic):
-        self.topics.pop(topic.name, None)
+        with self._lock:
+            self.topics.pop(topic.name, None)
 
     def _should_split(self, timestamp):
         current = self.files[-1]
@@ -227,18 +294,27 @@ class BagWriter:
                     timestamp - current.start > self.max_duration_ns)
 
     def split(self):
-        self.file.close()
-        self._open_file()
-        self._refresh_metadata()
+        with self._lock:
+            self.file.close()
+            self._open_file()
+            self._refresh_metadata()
 
     def write(self, topic_name, data, timestamp):
         if self.closed:
             raise BagError('Bag is not open. Call open() before writing.')
-        entry = self.topics.get(topic_name)
-        if entry is None:
+        if topic_name not in self.topics:
             raise BagError(f"Failed to write on topic '{topic_name}'. "
                            'Call create_topic() before first write.')
-        timestamp = int(timestamp)
+        if self.cache is not None:
+            self.cache.push(topic_name, data, int(timestamp))
+        else:
+            with self._lock:
+                self._write_now(topic_name, data, int(timestamp))
+
+    def _write_now(self, topic_name, data, timestamp):
+        entry = self.topics.get(topic_name)
+        if entry is None:             # removed while its messages waited in the cache
+            return
         if (self.max_size or self.max_duration_ns) and self._should_split(timestamp):
             self.split()
             entry = self.topics[topic_name]
@@ -248,9 +324,25 @@ class BagWriter:
         if committed and time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
             self._refresh_metadata()
 
+    def _consume(self):
+        """The writer thread (rosbag2_cpp's CacheConsumer): swap, write, repeat; the last
+        round after close() began empties the cache."""
+        cache = self.cache
+        last = False
+        while True:
+            batch = cache.swap(CACHE_WAIT_SECONDS)
+            with self._lock:
+                for topic_name, data, timestamp in batch:
+                    self._write_now(topic_name, data, timestamp)
+                self.file.tick()       # a sqlite3 batch or an mcap chunk that waited too long
+            if last:
+                return
+            last = cache.flushing
+
     def flush(self):
-        getattr(self.file, 'settle', self.file.commit)()
-        self._refresh_metadata()
+        with self._lock:
+            getattr(self.file, 'settle', self.file.commit)()
+            self._refresh_metadata()
 
     def _refresh_metadata(self):
         # rosbag2 writes metadata.yaml once, at close. A writer that is never closed (a
@@ -276,10 +368,16 @@ class BagWriter:
         if self.closed:
             return
         self.closed = True
-        self.file.close()
-        if self.storage_id == 'mcap' and self.file.path:
-            self.files[-1].path = self.file.path
-        write_metadata(self.uri, self.metadata())
+        if self.cache is not None:
+            from labkit.rclpy.logging import get_logger
+            get_logger('rosbag2_cpp').info(
+                'Writing remaining messages from cache to the bag. It may take a while')
+            self.cache.begin_flushing()
+            self._consumer.join()
+            self.cache.log_dropped()
+        with self._lock:
+            self.file.close()
+            write_metadata(self.uri, self.metadata())
 
 
 def open_writer(uri, storage_id=''):
@@ -287,6 +385,16 @@ def open_writer(uri, storage_id=''):
 
 
 # --------------------------------------------------------------------------- reading
+
+def _file_reader(path, storage_id):
+    """The storage plugin's reader for one file; a file it cannot open: rosbag2's line."""
+    if storage_id == 'mcap' or path.endswith('.mcap'):
+        return _McapReader(path)
+    try:
+        return _SqliteReader(path)
+    except sqlite3.Error:
+        raise BagError('No storage could be initialized from the inputs.') from None
+
 
 class _SqliteReader:
     def __init__(self, path):
@@ -337,23 +445,40 @@ class _SqliteReader:
 
 
 class _McapReader:
-    def __init__(self, directory):
-        from rosbags.rosbag2 import Reader
-        self.reader = Reader(directory)
-        self.reader.open()
-        self.topics = {}
-        for c in self.reader.connections:
-            self.topics[c.id] = TopicMetadata(c.topic, c.msgtype, c.ext.serialization_format, '')
+    """Every whole record of an `.mcap` file (one cut short by a kill too), in time order."""
+
+    def __init__(self, path):
+        from labkit.bag.mcap_file import scan
+        try:
+            self.contents = scan(path)
+        except (OSError, ValueError, struct.error):
+            raise BagError('No storage could be initialized from the inputs.') from None
+        c = self.contents
+        self.topics = {cid: TopicMetadata(topic, c.type_of(cid), encoding,
+                                          metadata.get('offered_qos_profiles', ''))
+                       for cid, (_, topic, encoding, metadata) in c.channels.items()}
 
     def messages(self, topics=None, start=None):
-        conns = [c for c in self.reader.connections if topics is None or c.topic in topics]
-        if not conns:
-            return
-        for c, stamp, data in self.reader.messages(connections=conns, start=start):
-            yield c.topic, bytes(data), stamp
+        names = {cid: t.name for cid, t in self.topics.items()
+                 if topics is None or t.name in topics}
+        chosen = [(stamp, n, cid, data) for n, (cid, stamp, data)
+                  in enumerate(self.contents.messages)
+                  if cid in names and (start is None or stamp >= start)]
+        chosen.sort(key=lambda m: (m[0], m[1]))
+        for stamp, _, cid, data in chosen:
+            yield names[cid], data, stamp
+
+    def file_information(self, relative):
+        stamps = [m[1] for m in self.contents.messages if m[0] in self.topics]
+        counts = {}
+        for cid, _, _ in self.contents.messages:
+            counts[cid] = counts.get(cid, 0) + 1
+        info = FileInformation(relative, min(stamps, default=0),
+                               (max(stamps) - min(stamps)) if stamps else 0, len(stamps))
+        return info, [TopicInformation(t, counts.get(cid, 0)) for cid, t in self.topics.items()]
 
     def close(self):
-        self.reader.close()
+        pass
 
 
 class BagReader:
@@ -367,16 +492,11 @@ class BagReader:
         self.metadata = read_bag_metadata(uri, storage_id)
         self.storage_id = self.metadata.storage_identifier
         directory = uri if os.path.isdir(uri) else os.path.dirname(uri) or '.'
-        if self.storage_id == 'mcap':
-            self.files = [_McapReader(directory)]
-        else:
-            paths = [os.path.join(directory, p) for p in self.metadata.relative_file_paths] \
-                if os.path.isdir(uri) else [uri]
-            self.files = [_SqliteReader(p) for p in paths]
-        if self.metadata.relative_file_paths:
-            first = self.metadata.relative_file_paths[0]
-            opened = os.path.join(uri, first) if os.path.isdir(uri) else uri
-            storage_log(f"Opened database '{opened}' for READ_ONLY.")
+        paths = [os.path.join(directory, p) for p in self.metadata.relative_file_paths] \
+            if os.path.isdir(uri) else [uri]
+        self.files = [_file_reader(p, self.storage_id) for p in paths]
+        if self.metadata.relative_file_paths and self.storage_id == 'sqlite3':
+            storage_log(f"Opened database '{paths[0]}' for READ_ONLY.")
 
     def topics(self):
         return [t.topic_metadata for t in self.metadata.topics_with_message_count]
@@ -395,7 +515,7 @@ class BagReader:
             f.close()
 
 
-def _storage_files(directory):
+def storage_files(directory):
     def index(name):  # `bag_10.db3` comes after `bag_9.db3`
         stem = os.path.splitext(name)[0]
         tail = stem.rsplit('_', 1)[-1]
@@ -429,21 +549,22 @@ def read_bag_metadata(uri, storage_id=''):
     """metadata.yaml if the bag has one, else what `ros2 bag reindex` would rebuild."""
     uri = os.fspath(uri)
     if os.path.isdir(uri) and os.path.exists(os.path.join(uri, METADATA_FILENAME)):
-        m = read_metadata(uri)
+        try:
+            m = read_metadata(uri)
+        except MetadataError as e:
+            raise BagError(str(e)) from None
         m.bag_size = directory_size(uri)
         if not _stale(uri, m):
             return m
     if os.path.isdir(uri):
-        directory, names = uri, _storage_files(uri)
+        directory, names = uri, storage_files(uri)
     else:
         directory, names = os.path.dirname(uri) or '.', [os.path.basename(uri)]
     if not names:
         raise BagError('No storage could be initialized from the inputs.')
-    if any(n.endswith('.mcap') for n in names):
-        raise BagError(f"Bag '{uri}' has no {METADATA_FILENAME}: run `ros2 bag reindex`.")
     files, topics = [], {}
     for name in names:
-        reader = _SqliteReader(os.path.join(directory, name))
+        reader = _file_reader(os.path.join(directory, name), '')
         try:
             info, tinfo = reader.file_information(name)
         finally:
@@ -458,8 +579,9 @@ def read_bag_metadata(uri, storage_id=''):
     start = min((f.starting_time for f in used), default=0)
     end = max((f.starting_time + f.duration for f in used), default=0)
     size = directory_size(directory) if os.path.isdir(uri) else os.path.getsize(uri)
+    found = 'mcap' if names[0].endswith('.mcap') else 'sqlite3'
     return BagMetadata(
-        bag_size=size, storage_identifier=storage_id or 'sqlite3',
+        bag_size=size, storage_identifier=storage_id or found,
         relative_file_paths=names, files=files, duration=end - start, starting_time=start,
         message_count=sum(f.message_count for f in files),
         topics_with_message_count=list(topics.values()))
