@@ -9,7 +9,26 @@ export TZ ?= UTC
 
 .PHONY: setup test unit nbval browser book book-exec lab bench clean
 
-setup: $(STAMP)
+setup: $(STAMP) rosref
+
+# The real-ROS reference (Jazzy rclpy + Fast DDS wheels, cp311/cp312 only) that tests/dds
+# and benchmarks/bench_dds.py talk to. Its own venv, never inside .venv (see benchmarks/README.md).
+ROSREF       := .venv-rosref
+ROSREF_STAMP := $(ROSREF)/.installed
+ROSREF_PY    ?= $(shell command -v python3.11 || command -v python3.12 || echo python3)
+ROSREF_PKGS  := "ros-jazzy-rclpy[fastrtps]==7.1.6" ros-jazzy-rmw-fastrtps-cpp ros-jazzy-std-msgs \
+	ros-jazzy-geometry-msgs ros-jazzy-std-srvs ros-jazzy-rcl-interfaces ros-jazzy-action-msgs \
+	ros-jazzy-sensor-msgs ros-jazzy-builtin-interfaces ros-jazzy-nav-msgs \
+	ros-jazzy-rosgraph-msgs ros-jazzy-test-msgs
+
+.PHONY: rosref
+rosref: $(ROSREF_STAMP)
+
+$(ROSREF_STAMP): Makefile
+	test -x $(ROSREF)/bin/python || $(ROSREF_PY) -m venv $(ROSREF)
+	$(ROSREF)/bin/pip install -q --upgrade pip
+	$(ROSREF)/bin/pip install -q $(ROSREF_PKGS)
+	touch $(ROSREF_STAMP)
 
 $(STAMP): requirements.lock pyproject.toml
 	test -x $(PY) || python3 -m venv .venv

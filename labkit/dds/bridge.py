@@ -5,9 +5,11 @@ ROS type names, the same QoS); remote ones, found through DDS discovery and the
 peers' `ros_discovery_info`, become ordinary graph entries whose node is a
 `RemoteNode`. Nothing above this room knows whether a peer is local or remote.
 
-Threads: the bridge thread alone creates and deletes DDS entities and changes the
-remote part of the graph (a graph listener only wakes it); Cyclone's listener
-threads only hand received messages to local sinks.
+Threads: one bridge thread waits on a DDS WaitSet (the GIL is free while it
+waits), takes what arrived and hands it to local sinks, creates and deletes DDS
+entities and changes the remote part of the graph; a graph listener only wakes it.
+No Python code runs on Cyclone's own threads (no DDS listeners): a Python callback
+there would need the GIL while Cyclone holds its locks.
 """
 import itertools
 import os
@@ -74,7 +76,7 @@ def _message_class(type_name, part=None):
 class Bridge:
     def __init__(self, domain_id, localhost=True, distro=None):
         from cyclonedds.domain import Domain, DomainParticipant
-        from cyclonedds.core import Listener
+        from cyclonedds.core import WaitSet, GuardCondition, ReadCondition
         from cyclonedds.builtin import (BuiltinDataReader, BuiltinTopicDcpsParticipant,
                                         BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription)
         from cyclonedds.qos import Qos, Policy
@@ -82,8 +84,8 @@ class Bridge:
         self.localhost = localhost
         self.gid_size = discovery.gid_size(distro if distro is not None else config.distro())
         self._mask = _mask()
-        self._wake = threading.Event()
         self._stop = False
+        self._dirty = True
         self._lock = threading.RLock()
         self._domain = Domain(domain_id, config.cyclone_xml(localhost))
         self.participant = DomainParticipant(domain_id)
@@ -99,20 +101,26 @@ class Bridge:
         self._graph_eps = {}          # DDS GUID -> (signature, Endpoint)
         self._fastdds_warned = set()
         self.client_ids = itertools.count(random.getrandbits(40) << 20)
-        wake = Listener(on_data_available=lambda reader: self._wake.set())
+        self._waitset = WaitSet(self.participant)
+        self._guard = GuardCondition(self.participant)
+        self._waitset.attach(self._guard)
+        self._conditions = {}         # reader -> its ReadCondition on the waitset
+        self._ReadCondition = ReadCondition
         self._builtin = [
-            BuiltinDataReader(self.participant, BuiltinTopicDcpsParticipant, listener=wake),
-            BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication, listener=wake),
-            BuiltinDataReader(self.participant, BuiltinTopicDcpsSubscription, listener=wake)]
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsParticipant),
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication),
+            BuiltinDataReader(self.participant, BuiltinTopicDcpsSubscription)]
+        for reader in self._builtin:
+            self._watch(reader)
         info_qos = Qos(Policy.Reliability.Reliable(100_000_000), Policy.Durability.TransientLocal,
                        Policy.History.KeepLast(1))
         self._info_writer = self._writer(discovery.TOPIC, discovery.DDS_TYPE, info_qos)
         self._info_reader = self._reader(
             discovery.TOPIC, discovery.DDS_TYPE,
             Qos(Policy.Reliability.Reliable(100_000_000), Policy.Durability.TransientLocal,
-                Policy.History.KeepLast(64)), lambda reader: self._wake.set())
+                Policy.History.KeepLast(64)))
         self._publish_info()
-        GRAPH.listeners.append(self._wake.set)
+        GRAPH.listeners.append(self._graph_changed)
         self._thread = threading.Thread(target=self._run, name="labkit-dds", daemon=True)
         self._thread.start()
 
@@ -136,11 +144,37 @@ class Bridge:
         return DataWriter(self.participant, self._topic(name, dds_type),
                           qos=self._ignore_local(qos))
 
-    def _reader(self, name, dds_type, qos, on_data):
+    def _reader(self, name, dds_type, qos):
         from cyclonedds.sub import DataReader
-        from cyclonedds.core import Listener
-        return DataReader(self.participant, self._topic(name, dds_type),
-                          qos=self._ignore_local(qos), listener=Listener(on_data_available=on_data))
+        reader = DataReader(self.participant, self._topic(name, dds_type),
+                            qos=self._ignore_local(qos))
+        self._watch(reader)
+        return reader
+
+    def _watch(self, reader):
+        cond = self._ReadCondition(reader, self._mask)
+        self._waitset.attach(cond)
+        self._conditions[reader] = cond
+
+    def delete_reader(self, reader):
+        cond = self._conditions.pop(reader, None)
+        if cond is not None:
+            try:
+                self._waitset.detach(cond)
+                cond.__del__()
+            except Exception:
+                pass
+        reader.__del__()
+
+    def _graph_changed(self):
+        self._dirty = True
+        self.wake()
+
+    def wake(self):
+        try:
+            self._guard.set(True)
+        except Exception:
+            pass
 
     def take(self, reader):
         """[(bytes, sample_info)] of valid samples (a leaving writer's invalid one is dropped)."""
@@ -152,20 +186,29 @@ class Bridge:
 
     # ------------------------------------------------------------ the thread
     def _run(self):
+        waiting = False
         while not self._stop:
-            self._wake.wait(0.25)
-            self._wake.clear()
+            try:
+                self._waitset.wait(50_000_000 if waiting else 250_000_000)
+                self._guard.set(False)
+            except Exception:
+                pass
             if self._stop:
                 break
             try:
                 with self._lock:
-                    self._sync_local()
+                    for mirror in list(self._mirrors.values()):
+                        if mirror.reader is not None:
+                            mirror.on_data()
+                    if self._dirty:
+                        self._dirty = False
+                        self._sync_local()
                     self._sync_remote()
+                    waiting = False
                     for mirror in list(self._mirrors.values()):
                         if mirror.waiting:
                             mirror.flush()
-                            if mirror.waiting:
-                                self._wake.set()
+                            waiting = waiting or mirror.waiting
             except Exception as exc:        # never let the bridge thread die silently
                 if os.environ.get("LABKIT_DDS_DEBUG"):
                     import traceback
@@ -176,9 +219,8 @@ class Bridge:
     def missing_infos(self):
         """Peers with ROS endpoints whose ros_discovery_info has not arrived yet."""
         with self._lock:
-            peers = {s.participant_key.bytes for _, s in self._remote_eps.values()
-                     if wire.entity_from_dds(s.topic_name)[0] is not None}
-            return [p for p in peers if p in self._participants and p not in self._infos]
+            self._sync_remote()
+            return [p for p in self._participants if p not in self._infos]
 
     def sync(self):
         """Bring the DDS mirror up to date now (used before graph queries)."""
@@ -188,11 +230,11 @@ class Bridge:
 
     def close(self):
         self._stop = True
-        self._wake.set()
+        self.wake()
         if self._thread is not threading.current_thread():
             self._thread.join(5)
         try:
-            GRAPH.listeners.remove(self._wake.set)
+            GRAPH.listeners.remove(self._graph_changed)
         except ValueError:
             pass
         with self._lock:
@@ -208,8 +250,14 @@ class Bridge:
                 GRAPH._changed()
             self._graph_eps.clear()
             self._graph_nodes.clear()
-            for entity in [*self._builtin, self._info_writer, self._info_reader,
-                           *self._topics.values(), self.participant, self._domain]:
+            for cond in self._conditions.values():
+                try:
+                    self._waitset.detach(cond)
+                except Exception:
+                    pass
+            self._conditions.clear()
+            for entity in [*self._builtin, self._info_writer, self._info_reader, self._guard,
+                           self._waitset, *self._topics.values(), self.participant, self._domain]:
                 try:
                     entity.__del__()
                 except Exception:
@@ -397,11 +445,13 @@ class _Mirror:
             name = wire.topic_to_dds(ep.name)
             if kind == PUB:
                 self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos))
+                for msg in list(ep.history or ()):   # latched before the writer existed
+                    self._publish(msg)
                 ep.bridge = self._publish
                 GRAPH.rematch(ep.name)
             else:
-                self.reader = bridge._reader(name, dds_type, wire.qos_to_dds(ep.qos, reader=True),
-                                             self._on_message)
+                self.reader = bridge._reader(name, dds_type, wire.qos_to_dds(ep.qos, reader=True))
+                self.on_data = self._on_message
             return
         srv = _message_class(ep.type_name)
         self.request_cls, self.response_cls = srv.Request, srv.Response
@@ -409,13 +459,14 @@ class _Mirror:
         rep_type = wire.type_to_dds(ep.type_name, "_Response")
         qos = wire.qos_to_dds(ep.qos)
         if kind == SRV:
-            self.reader = bridge._reader(wire.request_topic(ep.name), req_type, qos,
-                                         self._on_request)
+            self.reader = bridge._reader(wire.request_topic(ep.name), req_type, qos)
+            self.on_data = self._on_request
             self.writer = bridge._writer(wire.reply_topic(ep.name), rep_type, qos)
             self._senders = {}
         else:
             self.writer = bridge._writer(wire.request_topic(ep.name), req_type, qos)
-            self.reader = bridge._reader(wire.reply_topic(ep.name), rep_type, qos, self._on_reply)
+            self.reader = bridge._reader(wire.reply_topic(ep.name), rep_type, qos)
+            self.on_data = self._on_reply
             self.client_id = next(bridge.client_ids)
             self.pending = {}         # sequence -> local header
             self.fifo = []            # Fast DDS servers: replies carry no header
@@ -434,13 +485,15 @@ class _Mirror:
             GRAPH.rematch(self.ep.name)
         if self.ep.kind == CLI:
             self.bridge._by_gid.pop(self.ep.gid, None)
-        for entity in (self.reader, self.writer):
-            if entity is not None:
-                try:
-                    entity.__del__()
-                except Exception:
-                    pass
+        reader, writer = self.reader, self.writer
         self.reader = self.writer = None
+        try:
+            if reader is not None:
+                self.bridge.delete_reader(reader)
+            if writer is not None:
+                writer.__del__()
+        except Exception:
+            pass
 
     # -- topics
     def _publish(self, msg):
@@ -450,10 +503,10 @@ class _Mirror:
         if writer is not None:
             ddspy_write(writer._ref, wire.pad4(rmw_serialize(msg)))
 
-    def _on_message(self, reader):
+    def _on_message(self):
         from labkit.interfaces import deserialize
         sink = self.ep.sink
-        for data, _ in self.bridge.take(reader):
+        for data, _ in self.bridge.take(self.reader):
             try:
                 msg = deserialize(data, self.cls)
             except Exception:
@@ -462,8 +515,9 @@ class _Mirror:
                 sink(msg)
 
     # -- a local service answering remote clients
-    def _on_request(self, reader):
+    def _on_request(self):
         from labkit.interfaces import deserialize
+        reader = self.reader
         for data, info in self.bridge.take(reader):
             if self._from_fastdds(reader, info.publication_handle):
                 self.bridge.warn_fastdds_client(self.ep.name)
@@ -515,7 +569,7 @@ class _Mirror:
             self.waiting = True
             self.flush()
             if self.waiting:
-                self.bridge._wake.set()
+                self.bridge.wake()
 
     def flush(self):
         """Send queued requests once the server's reader and writer are matched."""
@@ -536,9 +590,9 @@ class _Mirror:
         self.outbox.clear()
         self.waiting = False
 
-    def _on_reply(self, reader):
+    def _on_reply(self):
         from labkit.interfaces import deserialize
-        for data, _ in self.bridge.take(reader):
+        for data, _ in self.bridge.take(self.reader):
             header = None
             body = data
             if self.pending and len(data) >= 4 + wire.HEADER.size:

@@ -142,6 +142,8 @@ class Graph:
                         self._replay(pub, sub)
                 elif new is not None and (new is pub or new is sub):
                     incompatible.append((pub, sub, kind))
+            if pub.bridge is not None and pub.history is not None and pub.bridge not in matched:
+                matched.append(pub.bridge)   # TRANSIENT_LOCAL: DDS keeps it for late joiners
             pub.matched = matched      # a new list: a publish in progress keeps its old one
         for pub, sub, kind in incompatible:
             for ep, other in ((sub, pub), (pub, sub)):

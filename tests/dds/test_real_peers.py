@@ -1,0 +1,447 @@
+"""labkit on a real ROS 2 graph: real rclpy (Jazzy wheels, Fast DDS) and other labkit
+processes, over Cyclone DDS on loopback. Every program runs in a subprocess with its
+own ROS_DOMAIN_ID, so parallel runs never see each other; every wait is bounded."""
+import itertools
+import os
+import random
+import subprocess
+import sys
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[2]
+ROSREF = Path(os.environ.get("ROSREF_PYTHON", REPO / ".venv-rosref" / "bin" / "python"))
+needs_rosref = pytest.mark.skipif(not ROSREF.exists(), reason="no real-ROS reference venv "
+                                  "(make rosref)")
+_domains = itertools.count(random.Random(os.getpid()).randrange(120, 200))
+
+
+@pytest.fixture
+def domain():
+    return next(_domains) % 200 + 20
+
+
+def _env(domain, **extra):
+    env = dict(os.environ, ROS_DOMAIN_ID=str(domain), ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
+               PYTHONUNBUFFERED="1")
+    env.update(extra)
+    return env
+
+
+def real(tmp_path, name, code, domain):
+    """Start a real rclpy program (Fast DDS)."""
+    path = tmp_path / f"{name}.py"
+    path.write_text(PRELUDE + textwrap.dedent(code))
+    env = _env(domain, ROS_PYTHON_CHECK_FIELDS="1")
+    env.pop("PYTHONPATH", None)
+    return subprocess.Popen([str(ROSREF), str(path)], env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True)
+
+
+def labkit(tmp_path, name, code, domain, *args):
+    """Start a program under `labkit exec` (live time, joins DDS like a ROS 2 process)."""
+    path = tmp_path / f"{name}.py"
+    path.write_text(PRELUDE + textwrap.dedent(code))
+    env = _env(domain, LABKIT_TIME="live", LABKIT_DDS="on", ROS_DISTRO="jazzy",
+               PYTHONPATH=str(REPO))
+    return subprocess.Popen([sys.executable, "-m", "labkit", "exec", str(path), *args], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+
+
+def labkit_ros2(domain, *argv, timeout=20, background=False):
+    """`labkit ros2 ...` in another terminal (background=True: a Popen, see `done`)."""
+    env = _env(domain, LABKIT_TIME="live", LABKIT_DDS="on", ROS_DISTRO="jazzy",
+               PYTHONPATH=str(REPO))
+    cmd = [sys.executable, "-m", "labkit", "ros2", *argv]
+    if background:
+        return subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                                text=True)
+    return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=timeout)
+
+
+def done(proc, timeout=25):
+    out, err = finish(proc, timeout)
+    return subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
+
+
+def finish(proc, timeout=25):
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, err = proc.communicate()
+        pytest.fail(f"still running after {timeout} s\nstdout:\n{out}\nstderr:\n{err}")
+    return out, err
+
+
+# A helper both sides use: spin until a condition holds or a deadline passes.
+PRELUDE = """import time
+import rclpy
+def spin_until(node, cond, timeout):
+    end = time.monotonic() + timeout
+    while not cond() and time.monotonic() < end:
+        rclpy.spin_once(node, timeout_sec=0.05)
+    return cond()
+"""
+
+
+@needs_rosref
+def test_pubsub_both_ways_string_twist_image_and_real_graph_queries(tmp_path, domain):
+    """String, Twist and a 640x480 bgr8 Image each way; real rclpy lists the labkit node
+    and its publishers; labkit's CLI lists the real node and its topics."""
+    real_prog = real(tmp_path, "real_side", """
+        from std_msgs.msg import String
+        from geometry_msgs.msg import Twist
+        from sensor_msgs.msg import Image
+        rclpy.init(args=[])
+        node = rclpy.create_node('real_side')
+        got = {}
+        for topic, cls in (('lk_string', String), ('lk_twist', Twist), ('lk_image', Image)):
+            node.create_subscription(cls, topic, lambda m, t=topic: got.setdefault(t, m), 10)
+        pubs = [(node.create_publisher(String, 'real_string', 10), String(data='from real')),
+                (node.create_publisher(Twist, 'real_twist', 10), None),
+                (node.create_publisher(Image, 'real_image', 10), None)]
+        tw = Twist(); tw.linear.x = 2.0; tw.angular.z = -1.5
+        img = Image(height=480, width=640, encoding='bgr8', step=1920)
+        img.data = bytes(range(256)) * 3600
+        pubs[1] = (pubs[1][0], tw); pubs[2] = (pubs[2][0], img)
+        names = lambda: [n for n, _ in node.get_node_names_and_namespaces()]
+        end, done_at = time.monotonic() + 20, None
+        while time.monotonic() < end and (done_at is None or time.monotonic() < done_at + 3):
+            for pub, msg in pubs:
+                pub.publish(msg)
+            spin_until(node, lambda: False, 0.2)
+            if done_at is None and len(got) == 3 and 'lk_side' in names():
+                done_at = time.monotonic()   # keep publishing a little for the other side
+        print('got', sorted(got))
+        if 'lk_string' in got:
+            print('string', got['lk_string'].data)
+            print('twist', got['lk_twist'].linear.y, got['lk_twist'].angular.x)
+            im = got['lk_image']
+            print('image', im.width, im.height, im.encoding, len(im.data), bytes(im.data[:3]).hex())
+        print('nodes', sorted(names()))
+        pubs_of = node.get_publisher_names_and_types_by_node('lk_side', '/')
+        print('lk_side publishes', [n for n, _ in pubs_of if n.startswith('/lk_')])
+        spin_until(node, lambda: 'lk_side' not in names(), 10)   # stay until labkit is done
+    """, domain)
+    lk_prog = labkit(tmp_path, "lk_side", """
+        from std_msgs.msg import String
+        from geometry_msgs.msg import Twist
+        from sensor_msgs.msg import Image
+        rclpy.init()
+        node = rclpy.create_node('lk_side')
+        got = {}
+        for topic, cls in (('real_string', String), ('real_twist', Twist), ('real_image', Image)):
+            node.create_subscription(cls, topic, lambda m, t=topic: got.setdefault(t, m), 10)
+        tw = Twist(); tw.linear.y = 0.5; tw.angular.x = 3.0
+        img = Image(height=480, width=640, encoding='bgr8', step=1920)
+        img.data = bytes([7, 8, 9]) * (640 * 480)
+        pubs = [(node.create_publisher(String, 'lk_string', 10), String(data='from labkit')),
+                (node.create_publisher(Twist, 'lk_twist', 10), tw),
+                (node.create_publisher(Image, 'lk_image', 10), img)]
+        names = lambda: [n for n, _ in node.get_node_names_and_namespaces()]
+        end, done_at = time.monotonic() + 20, None
+        while time.monotonic() < end and (done_at is None or time.monotonic() < done_at + 2):
+            for pub, msg in pubs:
+                pub.publish(msg)
+            spin_until(node, lambda: False, 0.2)
+            # a Fast DDS peer sends its stored node list at its next heartbeat (<= 3 s)
+            if done_at is None and len(got) == 3 and 'real_side' in names():
+                done_at = time.monotonic()
+        print('got', sorted(got))
+        if len(got) == 3:
+            print('string', got['real_string'].data)
+            print('twist', got['real_twist'].linear.x, got['real_twist'].angular.z)
+            im = got['real_image']
+            print('image', im.width, im.height, im.encoding, len(im.data), bytes(im.data[:3]).hex())
+        import labkit
+        print(labkit.ros2('node list').stdout, end='')
+        print(labkit.ros2('topic list -t').stdout, end='')
+    """, domain)
+    real_out, real_err = finish(real_prog)
+    lk_out, lk_err = finish(lk_prog)
+    assert "got ['lk_image', 'lk_string', 'lk_twist']" in real_out, real_out + real_err
+    assert "string from labkit" in real_out
+    assert "twist 0.5 3.0" in real_out
+    assert "image 640 480 bgr8 921600 070809" in real_out
+    assert "'lk_side'" in real_out and "'real_side'" in real_out
+    assert "lk_side publishes ['/lk_image', '/lk_string', '/lk_twist']" in real_out
+    assert "got ['real_image', 'real_string', 'real_twist']" in lk_out, lk_out + lk_err
+    assert "string from real" in lk_out
+    assert "twist 2.0 -1.5" in lk_out
+    assert "image 640 480 bgr8 921600 000102" in lk_out
+    assert "/lk_side\n" in lk_out, lk_out
+    assert "/real_side\n" in lk_out
+    assert "/real_twist [geometry_msgs/msg/Twist]" in lk_out
+    assert "/real_image [sensor_msgs/msg/Image]" in lk_out
+
+
+@needs_rosref
+def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, domain):
+    """A real subscriber that starts after labkit published a latched message still gets
+    it; `labkit ros2 node list` / `node info` in another terminal show the real node."""
+    lk_prog = labkit(tmp_path, "latcher", """
+        from rclpy.qos import QoSProfile, DurabilityPolicy
+        from std_msgs.msg import String
+        rclpy.init()
+        node = rclpy.create_node('latcher')
+        pub = node.create_publisher(String, 'latched',
+                                    QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL))
+        pub.publish(String(data='published before you came'))
+        print('published', flush=True)
+        seen = lambda: 'late_sub' in [n for n, _ in node.get_node_names_and_namespaces()]
+        spin_until(node, seen, 15)
+        spin_until(node, lambda: not seen(), 15)   # stay while the real node lives
+    """, domain)
+    assert lk_prog.stdout.readline().strip() == "published"
+    time.sleep(0.5)
+    real_prog = real(tmp_path, "late_sub", """
+        from rclpy.qos import QoSProfile, DurabilityPolicy
+        from std_msgs.msg import String
+        rclpy.init(args=[])
+        node = rclpy.create_node('late_sub')
+        got = []
+        node.create_subscription(String, 'latched', lambda m: got.append(m.data),
+                                 QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL))
+        spin_until(node, lambda: got, 10)
+        print('late joiner got', got)
+        spin_until(node, lambda: False, 7.0)
+    """, domain)
+    time.sleep(1.0)
+    listed = labkit_ros2(domain, "node", "list", background=True)
+    info = labkit_ros2(domain, "node", "info", "/late_sub", background=True)
+    listed, info = done(listed), done(info)
+    real_out, real_err = finish(real_prog)
+    finish(lk_prog)
+    assert "late joiner got ['published before you came']" in real_out, real_out + real_err
+    assert "/late_sub\n" in listed.stdout and "/latcher\n" in listed.stdout, listed
+    assert "    /latched: std_msgs/msg/String" in info.stdout, info.stdout + info.stderr
+    assert "/late_sub/get_parameters: rcl_interfaces/srv/GetParameters" in info.stdout
+
+
+REAL_SERVER = """
+from std_srvs.srv import SetBool
+from rcl_interfaces.msg import ParameterDescriptor
+rclpy.init(args=[])
+node = rclpy.create_node('real_server')
+node.declare_parameter('speed', 1.5)
+def handle(req, resp):
+    resp.success = req.data
+    resp.message = 'real server got ' + str(req.data)
+    return resp
+node.create_service(SetBool, 'switch', handle)
+print('ready', flush=True)
+spin_until(node, lambda: node.get_parameter('speed').value == 4.0, 20)
+print('speed now', node.get_parameter('speed').value)
+spin_until(node, lambda: False, 1.0)
+"""
+
+
+@needs_rosref
+def test_labkit_calls_real_service_and_sets_real_parameters(tmp_path, domain):
+    server = real(tmp_path, "real_server", REAL_SERVER, domain)
+    assert server.stdout.readline().strip() == "ready"
+    client = labkit(tmp_path, "lk_client", """
+        import rclpy
+        from std_srvs.srv import SetBool
+        rclpy.init()
+        node = rclpy.create_node('lk_client')
+        cli = node.create_client(SetBool, 'switch')
+        print('available', cli.wait_for_service(timeout_sec=10.0))
+        future = cli.call_async(SetBool.Request(data=True))
+        rclpy.spin_until_future_complete(node, future, timeout_sec=10.0)
+        print('response', future.result())
+    """, domain)
+    out, err = finish(client)
+    got = labkit_ros2(domain, "param", "get", "/real_server", "speed")
+    done = labkit_ros2(domain, "param", "set", "/real_server", "speed", "4.0")
+    real_out, real_err = finish(server)
+    assert "available True" in out, out + err
+    assert ("response std_srvs.srv.SetBool_Response(success=True, "
+            "message='real server got True')") in out
+    assert got.stdout == "Double value is: 1.5\n", got
+    assert done.stdout == "Set parameter successful\n", done
+    assert "speed now 4.0" in real_out, real_out + real_err
+
+
+FIBONACCI = """
+int32 order
+---
+int32[] sequence
+---
+int32[] sequence
+"""
+
+
+@needs_rosref
+def test_real_action_server_with_feedback(tmp_path, domain):
+    """labkit sends a goal to a real action server (test_msgs/action/Fibonacci, a type
+    labkit does not bundle: a share folder like a built workspace's brings it)."""
+    share = tmp_path / "share" / "test_msgs" / "action"
+    share.mkdir(parents=True)
+    (share / "Fibonacci.action").write_text(FIBONACCI.lstrip())
+    server = real(tmp_path, "real_action", """
+        from rclpy.action import ActionServer
+        from test_msgs.action import Fibonacci
+        rclpy.init(args=[])
+        node = rclpy.create_node('fib_server')
+        state = {'done': False}
+        def execute(goal):
+            seq = [0, 1]
+            for i in range(1, goal.request.order):
+                seq.append(seq[i] + seq[i - 1])
+                goal.publish_feedback(Fibonacci.Feedback(sequence=seq))
+                time.sleep(0.05)
+            goal.succeed()
+            state['done'] = True
+            return Fibonacci.Result(sequence=seq)
+        ActionServer(node, Fibonacci, 'fibonacci', execute)
+        print('ready', flush=True)
+        spin_until(node, lambda: state['done'], 20)
+        spin_until(node, lambda: False, 1.0)
+    """, domain)
+    assert server.stdout.readline().strip() == "ready"
+    client = labkit(tmp_path, "lk_action", f"""
+        import labkit.interfaces
+        labkit.interfaces.add_share_path({str(tmp_path / 'share')!r})
+        import rclpy
+        from rclpy.action import ActionClient
+        from test_msgs.action import Fibonacci
+        rclpy.init()
+        node = rclpy.create_node('fib_client')
+        ac = ActionClient(node, Fibonacci, 'fibonacci')
+        print('server', ac.wait_for_server(timeout_sec=10.0))
+        feedback = []
+        goal = ac.send_goal_async(Fibonacci.Goal(order=5),
+                                  feedback_callback=lambda f: feedback.append(list(f.feedback.sequence)))
+        rclpy.spin_until_future_complete(node, goal, timeout_sec=10.0)
+        print('accepted', goal.result().accepted)
+        result = goal.result().get_result_async()
+        rclpy.spin_until_future_complete(node, result, timeout_sec=10.0)
+        print('result', list(result.result().result.sequence))
+        print('feedback', feedback[-1] if feedback else None, len(feedback) > 0)
+    """, domain)
+    out, err = finish(client)
+    finish(server)
+    assert "server True" in out, out + err
+    assert "accepted True" in out
+    assert "result [0, 1, 1, 2, 3, 5]" in out
+    assert "feedback [0, 1, 1, 2, 3, 5] True" in out
+
+
+LK_SERVER = """
+import rclpy
+from example_interfaces.srv import AddTwoInts
+from example_interfaces.action import Fibonacci
+from rclpy.action import ActionServer
+rclpy.init()
+node = rclpy.create_node('lk_server')
+node.declare_parameter('gain', 2)
+node.create_service(AddTwoInts, 'add_two_ints',
+                    lambda req, resp: setattr(resp, 'sum', req.a + req.b) or resp)
+def execute(goal):
+    seq = [0, 1]
+    for i in range(1, goal.request.order):
+        seq.append(seq[i] + seq[i - 1])
+        goal.publish_feedback(Fibonacci.Feedback(sequence=seq))
+    goal.succeed()
+    return Fibonacci.Result(sequence=seq)
+ActionServer(node, Fibonacci, 'fibonacci', execute)
+print('ready', flush=True)
+import time
+end = time.monotonic() + 25
+while time.monotonic() < end and node.get_parameter('gain').value != 7:
+    rclpy.spin_once(node, timeout_sec=0.05)
+print('gain now', node.get_parameter('gain').value)
+end = time.monotonic() + 1.0
+while time.monotonic() < end:
+    rclpy.spin_once(node, timeout_sec=0.05)
+"""
+
+
+def test_labkit_to_labkit_services_actions_parameters(tmp_path, domain):
+    """Two labkit processes: a service call, an action with feedback and parameters,
+    all over DDS with rmw_cyclonedds_cpp's request header."""
+    server = labkit(tmp_path, "lk_server", LK_SERVER, domain)
+    assert server.stdout.readline().strip() == "ready"
+    call = labkit_ros2(domain, "service", "call", "/add_two_ints",
+                       "example_interfaces/srv/AddTwoInts", "{a: 2, b: 40}")
+    goal = labkit_ros2(domain, "action", "send_goal", "--feedback", "/fibonacci",
+                       "example_interfaces/action/Fibonacci", "{order: 4}")
+    got = labkit_ros2(domain, "param", "get", "/lk_server", "gain")
+    done = labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
+    out, err = finish(server)
+    assert "example_interfaces.srv.AddTwoInts_Response(sum=42)" in call.stdout, call
+    assert "Goal accepted with ID:" in goal.stdout, goal
+    assert "Feedback:\n    sequence:\n- 0\n- 1\n- 1\n- 2\n- 3" in goal.stdout, goal.stdout
+    assert "Result:\n    sequence:\n- 0\n- 1\n- 1\n- 2\n- 3" in goal.stdout
+    assert "Goal finished with status: SUCCEEDED" in goal.stdout
+    assert got.stdout == "Integer value is: 2\n", got
+    assert done.stdout == "Set parameter successful\n", done
+    assert "gain now 7" in out, out + err
+
+
+@needs_rosref
+def test_fast_dds_client_calling_labkit_service_gets_one_clear_line(tmp_path, domain):
+    server = labkit(tmp_path, "lk_server", LK_SERVER, domain)
+    assert server.stdout.readline().strip() == "ready"
+    client = real(tmp_path, "real_client", """
+        import rclpy
+        from std_srvs.srv import Empty
+        rclpy.init(args=[])
+        node = rclpy.create_node('real_client')
+        from rcl_interfaces.srv import ListParameters
+        cli = node.create_client(ListParameters, '/lk_server/list_parameters')
+        print('available', cli.wait_for_service(timeout_sec=10.0), flush=True)
+        future = cli.call_async(ListParameters.Request())
+        rclpy.spin_until_future_complete(node, future, timeout_sec=3.0)
+        print('answered', future.done())
+    """, domain)
+    out, _ = finish(client)
+    labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
+    _, err = finish(server)
+    assert "available True" in out
+    lines = [line for line in err.splitlines() if "Fast DDS client" in line]
+    assert lines == ["[WARN] [labkit.dds]: a Fast DDS client called the labkit service "
+                     "'/lk_server/list_parameters': Fast DDS matches replies by the RTPS "
+                     "related-sample-identity, which Cyclone DDS cannot set, so the reply "
+                     "never reaches it. Start the caller with "
+                     "RMW_IMPLEMENTATION=rmw_cyclonedds_cpp."], err
+
+
+def test_every_socket_labkit_opens_is_on_loopback(tmp_path, domain):
+    """Loopback only: no TCP, every socket on 127.0.0.1 except Cyclone's two unicast
+    receive sockets, which Cyclone 0.11 binds to the wildcard address (it has no option
+    to bind them to the interface); they sit on this domain's RTPS ports
+    (7400 + 250 * domain + 10 + 2 * index, and + 1), and Cyclone only sends to and
+    advertises 127.0.0.1."""
+    psutil = pytest.importorskip("psutil")
+    prog = labkit(tmp_path, "sockets", """
+        from std_msgs.msg import String
+        rclpy.init()
+        node = rclpy.create_node('sockets')
+        node.create_publisher(String, 'chatter', 10).publish(String(data='x'))
+        print('up', flush=True)
+        spin_until(node, lambda: False, 3)
+    """, domain)
+    try:
+        assert prog.stdout.readline().strip() == "up"
+        conns = psutil.Process(prog.pid).net_connections(kind="inet")
+    finally:
+        finish(prog)
+    assert conns, "labkit exec opened no DDS sockets: it did not join"
+    base = 7400 + 250 * domain + 10
+    rtps_ports = {base + 2 * i + k for i in range(33) for k in (0, 1)}
+    wildcard = []
+    for c in conns:
+        assert c.type == 2, f"a TCP socket: {c}"            # SOCK_DGRAM only
+        if c.raddr:
+            assert c.raddr.ip.startswith("127.") or c.raddr.ip == "::1", c
+        if c.laddr.ip in ("0.0.0.0", "::"):
+            wildcard.append(c.laddr.port)
+        else:
+            assert c.laddr.ip.startswith("127.") or c.laddr.ip == "::1", c
+    assert len(wildcard) <= 2 and set(wildcard) <= rtps_ports, wildcard
