@@ -277,20 +277,30 @@ def workspace_overlays(*, workspace_tree: bool = True) -> SVG:
         body.append(_text(left + 52, y + 22, f"{label}  {shown}", 13, weight="bold"))
         width = stack_right - left - 64
         shown_names = list(names)
-        while len(shown_names) > 1 and _cjk_width("  ".join(shown_names + ["…"]), 13) > width:
+        while len(shown_names) > 1 and _cjk_width(", ".join(shown_names + ["…"]), 13) > width:
             shown_names.pop()
         if len(shown_names) < len(names):
             shown_names.append("…")
-        text = "  ".join(shown_names) if names else "（空）"
+        text = ", ".join(shown_names) if names else "（空）"
         body.append(_text(left + 52, y + 50, text, 13, mono=True))
         if i < len(all_layers) - 1:
             body.append(f'<line x1="{left + 20}" y1="{y + box_h / 2}" x2="{left + 20}" '
                         f'y2="{y + box_h * 1.5 + 10}" stroke="#555" stroke-width="1.6" '
                         'marker-end="url(#arrow)"/>')
         y += box_h + 10
-    body.append(_text(left, y + 18,
-                      "AMENT_PREFIX_PATH = " + ":".join(index.search_paths_shown())[:70], 12,
-                      mono=True, fill="#333"))
+    # AMENT_PREFIX_PATH as `echo $AMENT_PREFIX_PATH` prints it, wrapped after a ':'
+    lines, line = [], "AMENT_PREFIX_PATH="
+    paths = index.search_paths_shown()
+    for k, p in enumerate(paths):
+        piece = p + (":" if k < len(paths) - 1 else "")
+        if len(line) + len(piece) > 88 and not line.endswith("="):
+            lines.append(line)
+            line = "  "
+        line += piece
+    lines.append(line)
+    for k, text in enumerate(lines):
+        body.append(_text(left, y + 18 + k * 18, text, 12, mono=True, fill="#333"))
+    y += (len(lines) - 1) * 18
     body.append(_text(left, y + 40, "ros2 run / ros2 pkg / import 从上往下找，先找到的同名功能包生效", 13))
     height = y + 54
     if workspace_tree:

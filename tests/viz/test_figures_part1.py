@@ -92,8 +92,15 @@ def test_workspace_overlays_stack_the_sourced_workspaces(tmp_path, monkeypatch):
     first = install("base_ws", ["base_pkg"])
     second = install("ros2_ws", ["package_python", "my_robot"])
     monkeypatch.setattr(source, "sourced", lambda: [first, second])
+    monkeypatch.setenv("AMENT_PREFIX_PATH", ":".join(
+        [second + "/my_robot", second + "/package_python", first + "/base_pkg"]))
     svg = fig.workspace_overlays()
     _check_legible(svg)
     s = str(svg)
-    assert s.index("my_robot  package_python") < s.index("base_pkg") < s.index("rclpy")
+    assert s.index("my_robot, package_python") < s.index("base_pkg") < s.index("rclpy")
     assert s.index("overlay（叠加层）") < s.index("underlay（底层）")
+    # every prefix of AMENT_PREFIX_PATH is printed whole, the underlay last
+    from labkit.ament import index
+    printed = "".join(re.findall(r">((?:AMENT_PREFIX_PATH=|  )[^<]*)<", s)).replace(" ", "")
+    assert printed == "AMENT_PREFIX_PATH=" + ":".join(index.search_paths_shown()).replace(" ", "")
+    assert printed.endswith("/opt/ros/humble")
