@@ -19,6 +19,11 @@ import os
 
 _node = None
 
+# plain characters every Chinese font has (an emoji needs a font the reader may lack),
+# legible the same in the stored text, the HTML book and a terminal
+PASS = "  [对] "
+FAIL = "  [错] "
+
 
 def _graph_node():
     """A hidden node of the notebook's own process, created once."""
@@ -57,7 +62,7 @@ class Checker:
     def report(self) -> bool:
         print(f"【{self.title}】")
         for ok, text in self.results:
-            print(("  ✅ " if ok else "  ❌ ") + text)
+            print((PASS if ok else FAIL) + text)
         missing = sum(1 for ok, _ in self.results if not ok)
         if not self.results:
             print("  （没有检查项）")
