@@ -32,11 +32,33 @@ def get_launch_description_from_python_launch_file(path):
 
 
 def get_launch_description_from_any_launch_file(path):
-    if path.endswith(('.xml', '.yaml', '.yml')):
-        raise InvalidLaunchFileError(
-            'labkit runs Python launch files only (not yet: {})'.format(
-                os.path.basename(path)))
-    return get_launch_description_from_python_launch_file(path)
+    """launch's loaders in launch's order: a .py file as Python first, anything else
+    through the XML/YAML front-ends first (labkit/launch/frontend.py)."""
+    from labkit.launch import frontend
+    if path.endswith('.py'):
+        return get_launch_description_from_python_launch_file(path)
+    try:
+        return frontend.get_launch_description_from_frontend_launch_file(path)
+    except Exception as exc:      # noqa: BLE001 - reported as launch reports it
+        errors = [exc]
+    try:                          # launch then tries the file as Python
+        with open(path, encoding='utf-8') as f:
+            compile(f.read(), path, 'exec')
+    except (SyntaxError, ValueError) as exc:
+        errors.append(exc)
+    extension = frontend.frontend_format(path) if frontend.is_frontend_file(path) else ''
+    raise InvalidLaunchFileError(_load_errors(extension, errors))
+
+
+def _load_errors(extension, errors):
+    """launch.InvalidLaunchFileError's text."""
+    if not extension:
+        return 'The launch file may have a syntax error, or its format is unknown'
+    text = 'Caught {} when trying to load file of format [{}]:'.format(
+        'multiple exceptions' if len(errors) > 1 else 'exception', extension)
+    for error in errors:
+        text += '\n - {}: {}'.format(type(error).__name__, error)
+    return text
 
 
 class LaunchDescriptionSource:
@@ -90,3 +112,14 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
 
 class AnyLaunchDescriptionSource(PythonLaunchDescriptionSource):
     _load = staticmethod(get_launch_description_from_any_launch_file)
+
+
+def _load_frontend(path):
+    from labkit.launch import frontend
+    return frontend.get_launch_description_from_frontend_launch_file(path)
+
+
+class FrontendLaunchDescriptionSource(PythonLaunchDescriptionSource):
+    """An XML or YAML launch file (launch_xml's and launch_yaml's sources are this one)."""
+
+    _load = staticmethod(_load_frontend)

@@ -1,0 +1,661 @@
+"""The XML and YAML launch front-ends (launch_xml, launch_yaml): a declarative launch file
+becomes the same launch description a Python launch file builds.
+
+The tags and attributes are the real ones (launch's and launch_ros's `parse` methods):
+`launch` (root), `arg` (+ `choice`), `let`, `group` (`scoped`, `forwarding`, `keep`),
+`include` (`file`, + `arg`), `log`, `set_env`, `unset_env`, `append_env`, `timer`,
+`shutdown`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`, `shell`, + `env`),
+`node` (`pkg`, `exec`, `name`, `namespace`, `exec_name`, `args`, `ros_args`, `output`,
+`respawn`, `launch-prefix`, + `param`, `remap`, `env`), `push-ros-namespace` (also
+`push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
+Substitutions are written `$(name arg ...)`: var, env, eval, anon, not, and, command,
+find-exec, dirname, filename, find-pkg-share, find-pkg-prefix, exec-in-pkg.
+
+XML attributes are text, coerced to the type an attribute needs (YAML rules, as
+launch_xml does); `name-sep` splits a list. YAML values keep their own types.
+"""
+import os
+import shlex
+import xml.etree.ElementTree as ET
+
+import yaml
+
+from labkit.launch.launch_description import LaunchDescription
+
+XML_EXTENSIONS = ('launch.xml', 'xml')
+YAML_EXTENSIONS = ('launch.yaml', 'launch.yml', 'yaml', 'yml')
+
+ENTITIES = 'entities'       # get_attr(data_type=ENTITIES): nested entities of that name
+
+
+def is_frontend_file(path):
+    return path.endswith(tuple('.' + e for e in XML_EXTENSIONS + YAML_EXTENSIONS))
+
+
+# ------------------------------------------------------------------ substitutions
+
+class _Reader:
+    """`$(name arg ...)` inside text, by launch's grammar (grammar.lark), read by hand."""
+
+    def __init__(self, text):
+        self.text = text
+        self.i = 0
+
+    def peek(self, n=1):
+        return self.text[self.i:self.i + n]
+
+    def at_substitution(self):
+        return self.peek(2) == '$('
+
+    def template(self):
+        """Top level: text and substitutions, up to the end (spaces and quotes are text)."""
+        out = _Parts()
+        while self.i < len(self.text):
+            if self.at_substitution():
+                out.add(self.substitution())
+            else:
+                out.text(self.char())
+        return out.items
+
+    def char(self):
+        c = self.text[self.i]
+        if c == '\\' and self.i + 1 < len(self.text):   # an escaped character is itself
+            self.i += 2
+            return self.text[self.i - 1]
+        self.i += 1
+        return c
+
+    def substitution(self):
+        start = self.i
+        self.i += 2
+        name_start = self.i
+        while self.i < len(self.text) and (self.text[self.i].isalnum() or
+                                            self.text[self.i] in '_-'):
+            self.i += 1
+        name = self.text[name_start:self.i]
+        if not name or not name[0].isalpha():
+            raise ValueError(f"Invalid substitution at column {start}: '{self.text}'")
+        args = []
+        while self.peek() == ' ':
+            self.i += 1
+            args.append(self.argument())
+        if self.peek() != ')':
+            raise ValueError(f"Unterminated substitution '$({name}' in '{self.text}'")
+        self.i += 1
+        return instantiate_substitution(name, args)
+
+    def argument(self):
+        quote = self.peek()
+        out = _Parts()
+        if quote in ("'", '"'):
+            self.i += 1
+            while self.i < len(self.text) and self.peek() != quote:
+                if self.at_substitution():
+                    out.add(self.substitution())
+                else:
+                    out.text(self.char())
+            if self.peek() != quote:
+                raise ValueError(f"Unterminated quote in '{self.text}'")
+            self.i += 1
+            return out.items
+        while self.i < len(self.text) and self.peek() not in (' ', ')', "'", '"'):
+            if self.at_substitution():
+                out.add(self.substitution())
+            else:
+                out.text(self.char())
+        return out.items
+
+
+class _Parts:
+    def __init__(self):
+        self.items = []
+
+    def text(self, chars):
+        from labkit.launch.substitutions import TextSubstitution
+        if self.items and isinstance(self.items[-1], TextSubstitution):
+            self.items[-1] = TextSubstitution(text=self.items[-1].text + chars)
+        else:
+            self.items.append(TextSubstitution(text=chars))
+
+    def add(self, substitution):
+        self.items.append(substitution)
+
+
+def _arity(name, args, low, high=None):
+    high = low if high is None else high
+    if not low <= len(args) <= high:
+        counts = {0: "doesn't expect arguments", 1: 'expects 1 argument'}
+        wanted = counts.get(high, f'expects {low} or {high} arguments' if low != high
+                            else f'expects {high} arguments')
+        if high == 0:
+            wanted = "doesn't expect arguments"
+        raise TypeError(f'{name} substitution {wanted}')
+
+
+def instantiate_substitution(name, args):
+    from labkit.launch import substitutions as s
+    from labkit.launch_ros import substitutions as rs
+    if name == 'var':
+        _arity(name, args, 1, 2)
+        return s.LaunchConfiguration(args[0], default=args[1] if len(args) > 1 else None)
+    if name == 'env':
+        _arity(name, args, 1, 2)
+        return s.EnvironmentVariable(args[0],
+                                     default_value=args[1] if len(args) > 1 else None)
+    if name == 'eval':
+        _arity(name, args, 1)
+        return s.PythonExpression(args[0])
+    if name == 'anon':
+        _arity(name, args, 1)
+        return s.AnonName(args[0])
+    if name == 'not':
+        _arity(name, args, 1)
+        return s.NotSubstitution(args[0])
+    if name == 'and':
+        _arity(name, args, 2)
+        return s.AndSubstitution(args[0], args[1])
+    if name == 'command':
+        if not 1 <= len(args) <= 2:
+            raise ValueError('command substitution expects 1 or 2 arguments')
+        return s.Command(args[0], **({'on_stderr': args[1]} if len(args) > 1 else {}))
+    if name == 'find-exec':
+        if len(args) != 1:
+            raise AttributeError('find-exec substitution expects 1 argument')
+        return s.FindExecutable(name=args[0])
+    if name in ('dirname', 'filename'):
+        _arity(name, args, 0)
+        return s.ThisLaunchFileDir() if name == 'dirname' else s.ThisLaunchFile()
+    if name in ('find-pkg-share', 'find-pkg-prefix'):
+        if len(args) != 1:
+            raise AttributeError('find package substitutions expect 1 argument')
+        cls = rs.FindPackageShare if name == 'find-pkg-share' else rs.FindPackagePrefix
+        return cls(args[0])
+    if name == 'exec-in-pkg':
+        if len(args) != 2:
+            raise TypeError('exec-in-pkg substitution expects 2 arguments')
+        return rs.ExecutableInPackage(executable=args[0], package=args[1])
+    raise RuntimeError('Unknown substitution: {}'.format(name))
+
+
+def parse_substitution(text):
+    """Text with `$(...)` -> a list of substitutions (launch.frontend.parse_substitution)."""
+    from labkit.launch.substitutions import TextSubstitution
+    if not text:
+        return [TextSubstitution(text=text)]
+    return _Reader(text).template()
+
+
+def parse_if_substitutions(value):
+    """A plain value stays as it is; text with substitutions becomes substitutions."""
+    from labkit.launch.substitutions import TextSubstitution
+    if isinstance(value, str):
+        parsed = parse_substitution(value)
+        if len(parsed) == 1 and isinstance(parsed[0], TextSubstitution):
+            return parsed[0].text
+        return parsed
+    if isinstance(value, list):
+        return [parse_if_substitutions(v) for v in value]
+    return value
+
+
+def escape_characters(value):
+    out, i = [], 0
+    while i < len(value):
+        if value[i] == '\\' and i + 1 < len(value):
+            i += 1
+        out.append(value[i])
+        i += 1
+    return ''.join(out)
+
+
+# ------------------------------------------------------------------ entities
+
+def _coerce(text, data_type, can_be_str=True):
+    """XML text -> the attribute's type, by YAML rules (launch.utilities.type_utils)."""
+    if data_type is str:
+        return text
+    if data_type is None or data_type is list:
+        if not text:
+            return text
+        try:
+            value = yaml.safe_load(text)
+        except yaml.YAMLError:
+            if can_be_str:
+                return text
+            raise ValueError(f"Failed to convert '{text}' using yaml rules")
+        if data_type is list and not isinstance(value, list):
+            raise ValueError(f"Cannot convert value '{text}' to a list")
+        ok = (bool, int, float, str, list)
+        return value if isinstance(value, ok) else text
+    if data_type in (int, float):
+        try:
+            return data_type(text)
+        except ValueError:
+            if can_be_str:
+                return text
+            raise
+    if data_type is bool:
+        if text.lower() in ('true', 'false'):
+            return text.lower() == 'true'
+        if can_be_str:
+            return text
+        raise ValueError(f"Cannot convert '{text}' to bool")
+    return text
+
+
+class XmlEntity:
+    def __init__(self, element):
+        self._element = element
+
+    @property
+    def type_name(self):
+        return self._element.tag
+
+    @property
+    def children(self):
+        return [XmlEntity(child) for child in self._element]
+
+    def get_attr(self, name, *, data_type=str, optional=False, can_be_str=True):
+        if data_type == ENTITIES:
+            found = [XmlEntity(child) for child in self._element if child.tag == name]
+            if not found and not optional:
+                raise AttributeError("Attribute '{}' of type '{}' not found in Entity '{}'"
+                                     .format(name, 'List[Entity]', self.type_name))
+            return found or None
+        attrib = self._element.attrib
+        if name not in attrib:
+            if optional:
+                return None
+            raise AttributeError("Attribute '{}' of type '{}' not found in Entity '{}'".format(
+                name, data_type, self.type_name))
+        value = attrib[name]
+        if name + '-sep' in attrib:
+            return [_coerce(v, None if data_type is list else data_type, can_be_str)
+                    for v in value.split(attrib[name + '-sep'])]
+        try:
+            return _coerce(value, data_type, can_be_str)
+        except ValueError:
+            raise TypeError("Attribute '{}' of Entity '{}' expected to be of type '{}'."
+                            "'{}' can not be converted to one of those types".format(
+                                name, self.type_name, data_type, value)) from None
+
+
+class YamlEntity:
+    def __init__(self, element, type_name):
+        self._element = element
+        self._type_name = type_name
+
+    @property
+    def type_name(self):
+        return self._type_name
+
+    @property
+    def children(self):
+        element = self._element
+        if isinstance(element, dict):
+            if 'children' not in element:
+                raise ValueError(
+                    f'Expected entity `{self._type_name}` to have children entities.'
+                    f'That can be a list of subentities or a dictionary with a `children` '
+                    'list element')
+            element = element['children']
+        if not isinstance(element, list):
+            raise TypeError(f'Expected a dict or list, got {type(element)}:'
+                            f'\n---\n{element}\n---')
+        out = []
+        for child in element:
+            if not isinstance(child, dict) or len(child) != 1:
+                raise RuntimeError('Subentities must be a dictionary with only one key'
+                                   ', which is the entity type')
+            (type_name, body), = child.items()
+            out.append(YamlEntity(body, type_name))
+        return out
+
+    def get_attr(self, name, *, data_type=str, optional=False, can_be_str=True):
+        element = self._element if isinstance(self._element, dict) else {}
+        if name not in element:
+            if optional:
+                return None
+            raise AttributeError("Can not find attribute '{}' in Entity '{}'".format(
+                name, self._type_name))
+        data = element[name]
+        if data_type == ENTITIES:
+            if isinstance(data, list) and data and isinstance(data[0], dict):
+                return [YamlEntity(child, name) for child in data]
+            raise TypeError("Attribute '{}' of Entity '{}' expected to be a list of "
+                            "dictionaries.".format(name, self._type_name))
+        if data_type is not None and not isinstance(data, data_type) and \
+                not (can_be_str and isinstance(data, str)) and \
+                not (data_type is float and isinstance(data, int)):
+            raise TypeError("Attribute '{}' of Entity '{}' expected to be of type '{}', got "
+                            "'{}'".format(name, self._type_name, data_type, type(data)))
+        return data
+
+
+# ------------------------------------------------------------------ actions
+
+def _condition(entity):
+    from labkit.launch.conditions import IfCondition, UnlessCondition
+    if_cond = entity.get_attr('if', optional=True)
+    unless_cond = entity.get_attr('unless', optional=True)
+    if if_cond is not None and unless_cond is not None:
+        raise RuntimeError("if and unless conditions can't be used simultaneously")
+    if if_cond is not None:
+        return {'condition': IfCondition(parse_substitution(str(if_cond)))}
+    if unless_cond is not None:
+        return {'condition': UnlessCondition(parse_substitution(str(unless_cond)))}
+    return {}
+
+
+def _text(entity, name, optional=False):
+    value = entity.get_attr(name, optional=optional)
+    return None if value is None else parse_substitution(str(value))
+
+
+def _pairs(entities, first, second):
+    return [(_text(e, first), _text(e, second)) for e in entities or []]
+
+
+def _cmdline(text):
+    """launch's ExecuteProcess._parse_cmdline: a command line -> arguments, each a list
+    of substitutions (text around substitutions split on spaces, shell-like)."""
+    from labkit.launch.substitutions import TextSubstitution
+    args, arg = [], []
+    for sub in parse_substitution(text):
+        if not isinstance(sub, TextSubstitution):
+            arg.append(sub)
+            continue
+        tokens = shlex.split(sub.text)
+        if not tokens:
+            if arg:
+                args.append(arg)
+                arg = []
+            continue
+        if sub.text[0].isspace() and arg:
+            args.append(arg)
+            arg = []
+        arg.append(TextSubstitution(text=tokens[0]))
+        if len(tokens) > 1:
+            args.append(arg)
+            args.extend([TextSubstitution(text=t)] for t in tokens[1:-1])
+            arg = [TextSubstitution(text=tokens[-1])]
+        if sub.text[-1].isspace():
+            args.append(arg)
+            arg = []
+    if arg:
+        args.append(arg)
+    return args
+
+
+def _arg(entity):
+    from labkit.launch.actions import DeclareLaunchArgument
+    kwargs = _condition(entity)
+    default = entity.get_attr('default', optional=True)
+    if default is not None:
+        kwargs['default_value'] = parse_substitution(str(default))
+    description = entity.get_attr('description', optional=True)
+    if description is not None:
+        kwargs['description'] = escape_characters(description)
+    choices = entity.get_attr('choice', data_type=ENTITIES, optional=True)
+    if choices is not None:
+        kwargs['choices'] = [escape_characters(str(c.get_attr('value'))) for c in choices]
+    return DeclareLaunchArgument(escape_characters(entity.get_attr('name')), **kwargs)
+
+
+def _let(entity):
+    from labkit.launch.actions import SetLaunchConfiguration
+    return SetLaunchConfiguration(_text(entity, 'name'), _text(entity, 'value'),
+                                  **_condition(entity))
+
+
+def _group(entity):
+    from labkit.launch.actions import GroupAction
+    kwargs = _condition(entity)
+    for flag in ('scoped', 'forwarding'):
+        value = entity.get_attr(flag, data_type=bool, optional=True, can_be_str=False)
+        if value is not None:
+            kwargs[flag] = value
+    keeps = entity.get_attr('keep', data_type=ENTITIES, optional=True)
+    if keeps is not None:
+        kwargs['launch_configurations'] = {tuple(k): v for k, v in
+                                           _pairs(keeps, 'name', 'value')}
+    actions = [parse_action(child) for child in entity.children if child.type_name != 'keep']
+    return GroupAction(actions, **kwargs)
+
+
+def _include(entity):
+    from labkit.launch.actions import IncludeLaunchDescription
+    kwargs = _condition(entity)
+    args = entity.get_attr('arg', data_type=ENTITIES, optional=True)
+    if args is not None:
+        kwargs['launch_arguments'] = _pairs(args, 'name', 'value')
+    return IncludeLaunchDescription(_text(entity, 'file'), **kwargs)
+
+
+def _log(entity):
+    from labkit.launch.actions import LogInfo
+    return LogInfo(msg=_text(entity, 'message'), **_condition(entity))
+
+
+def _set_env(entity):
+    from labkit.launch.actions import SetEnvironmentVariable
+    return SetEnvironmentVariable(_text(entity, 'name'), _text(entity, 'value'),
+                                  **_condition(entity))
+
+
+def _unset_env(entity):
+    from labkit.launch.actions import UnsetEnvironmentVariable
+    return UnsetEnvironmentVariable(_text(entity, 'name'), **_condition(entity))
+
+
+def _append_env(entity):
+    from labkit.launch.actions import AppendEnvironmentVariable
+    kwargs = _condition(entity)
+    prepend = entity.get_attr('prepend', data_type=bool, optional=True)
+    if prepend is not None:
+        kwargs['prepend'] = prepend if isinstance(prepend, bool) else \
+            str(prepend).lower() == 'true'
+    separator = entity.get_attr('separator', optional=True)
+    if separator is not None:
+        kwargs['separator'] = str(separator)
+    return AppendEnvironmentVariable(_text(entity, 'name'), _text(entity, 'value'), **kwargs)
+
+
+def _timer(entity):
+    from labkit.launch.actions import TimerAction
+    period = entity.get_attr('period', data_type=float)
+    period = parse_if_substitutions(period) if isinstance(period, str) else float(period)
+    return TimerAction(period=period, actions=[parse_action(c) for c in entity.children],
+                       **_condition(entity))
+
+
+def _shutdown(entity):
+    from labkit.launch.actions import Shutdown
+    kwargs = _condition(entity)
+    reason = entity.get_attr('reason', optional=True)
+    if reason:
+        kwargs['reason'] = parse_substitution(str(reason))
+    return Shutdown(**kwargs)
+
+
+def _process_kwargs(entity, ignore=()):
+    kwargs = _condition(entity)
+    if 'cmd' not in ignore:
+        kwargs['cmd'] = _cmdline(str(entity.get_attr('cmd')))
+    for attr, key in (('cwd', 'cwd'), ('name', 'name'), ('launch-prefix', 'prefix'),
+                      ('output', 'output'), ('respawn', 'respawn')):
+        if key in ignore:
+            continue
+        value = entity.get_attr(attr, optional=True)
+        if value is not None:
+            kwargs[key] = parse_substitution(str(value))
+    shell = entity.get_attr('shell', data_type=bool, optional=True, can_be_str=False)
+    if shell is not None and 'shell' not in ignore:
+        kwargs['shell'] = shell
+    env = entity.get_attr('env', data_type=ENTITIES, optional=True)
+    if env is not None:
+        kwargs['additional_env'] = {tuple(k): v for k, v in _pairs(env, 'name', 'value')}
+    return kwargs
+
+
+def _executable(entity):
+    from labkit.launch.actions import ExecuteProcess
+    kwargs = _process_kwargs(entity)
+    kwargs.pop('respawn', None)
+    kwargs.pop('prefix', None)
+    kwargs.pop('cwd', None)
+    return ExecuteProcess(**kwargs)
+
+
+_PARAM_TYPES = {'str': str, 'int': int, 'float': float, 'bool': bool,
+                'list_of_str': list, 'list_of_int': list, 'list_of_float': list,
+                'list_of_bool': list}
+
+
+def _parameters(entities):
+    """<param name= value=/>, nested <param name=><param .../></param>, <param from=/>."""
+    from labkit.launch_ros.parameter_descriptions import ParameterFile, ParameterValue
+
+    def nested(params):
+        out = {}
+        for param in params:
+            name = tuple(_text(param, 'name'))
+            type_id = param.get_attr('type', optional=True)
+            data_type = None
+            if type_id is not None:
+                if type_id not in _PARAM_TYPES:
+                    raise ValueError(f'Unknown type identifier: {type_id}')
+                data_type = _PARAM_TYPES[type_id]
+            value = param.get_attr('value', data_type=None, optional=True)
+            children = param.get_attr('param', data_type=ENTITIES, optional=True)
+            if value is not None and children:
+                raise RuntimeError('nested parameters and value attributes are mutually '
+                                   'exclusive')
+            if data_type is not None and children:
+                raise RuntimeError('nested parameters and type attributes are mutually '
+                                   'exclusive')
+            if value is not None:
+                if data_type is str and not isinstance(value, str):
+                    value = str(value)
+                out[name] = ParameterValue(parse_if_substitutions(value),
+                                           value_type=data_type)
+            elif children:
+                out[name] = nested(children)
+            else:
+                raise RuntimeError('either a value attribute or nested params are needed')
+        return out
+
+    normalized = []
+    for param in entities:
+        source = param.get_attr('from', optional=True)
+        name = param.get_attr('name', optional=True)
+        if source is not None and name is not None:
+            raise RuntimeError('name and from attributes are mutually exclusive')
+        if source is not None:
+            allow = param.get_attr('allow_substs', data_type=bool, optional=True)
+            normalized.append(ParameterFile(parse_substitution(str(source)),
+                                            allow_substs=bool(allow)))
+        elif name is not None:
+            normalized.append(nested([param]))
+        else:
+            raise ValueError('param Entity should have name or from attribute')
+    return normalized
+
+
+def _node(entity):
+    from labkit.launch_ros.actions import Node
+    kwargs = _process_kwargs(entity, ignore=('cmd', 'cwd', 'prefix', 'shell'))
+    kwargs.pop('additional_env', None)
+    args = entity.get_attr('args', optional=True)
+    if args is not None:
+        kwargs['arguments'] = _cmdline(str(args))
+    ros_args = entity.get_attr('ros_args', optional=True)
+    if ros_args is not None:
+        kwargs['ros_arguments'] = _cmdline(str(ros_args))
+    for attr, key in (('node-name', 'node_name'), ('name', 'name'),
+                      ('exec_name', 'exec_name'), ('pkg', 'package'),
+                      ('namespace', 'namespace')):
+        value = entity.get_attr(attr, optional=True)
+        if value is not None:
+            kwargs[key] = parse_substitution(str(value))
+    kwargs['executable'] = _text(entity, 'exec')
+    kwargs.pop('respawn', None)
+    remaps = entity.get_attr('remap', data_type=ENTITIES, optional=True)
+    if remaps is not None:
+        kwargs['remappings'] = _pairs(remaps, 'from', 'to')
+    params = entity.get_attr('param', data_type=ENTITIES, optional=True)
+    if params is not None:
+        kwargs['parameters'] = _parameters(params)
+    return Node(**kwargs)
+
+
+def _push_ros_namespace(entity):
+    from labkit.launch_ros.actions import PushRosNamespace
+    return PushRosNamespace(_text(entity, 'namespace'), **_condition(entity))
+
+
+def _set_parameter(entity):
+    from labkit.launch_ros.actions import SetParameter
+    return SetParameter(_text(entity, 'name'), _text(entity, 'value'), **_condition(entity))
+
+
+def _set_remap(entity):
+    from labkit.launch_ros.actions import SetRemap
+    return SetRemap(_text(entity, 'from'), _text(entity, 'to'), **_condition(entity))
+
+
+ACTIONS = {
+    'arg': _arg, 'let': _let, 'group': _group, 'include': _include, 'log': _log,
+    'set_env': _set_env, 'unset_env': _unset_env, 'append_env': _append_env,
+    'timer': _timer, 'shutdown': _shutdown, 'executable': _executable, 'node': _node,
+    'push-ros-namespace': _push_ros_namespace, 'push_ros_namespace': _push_ros_namespace,
+    'set_parameter': _set_parameter, 'set_remap': _set_remap,
+}
+
+
+def parse_action(entity):
+    parse = ACTIONS.get(entity.type_name)
+    if parse is None:
+        raise RuntimeError('Unrecognized entity of the type: {}'.format(entity.type_name))
+    return parse(entity)
+
+
+def parse_description(entity):
+    if entity.type_name != 'launch':
+        raise RuntimeError("Expected 'launch' as root tag")
+    deprecated = entity.get_attr('deprecated', optional=True)
+    return LaunchDescription([parse_action(child) for child in entity.children],
+                             deprecated_reason=deprecated)
+
+
+# ------------------------------------------------------------------ files
+
+def load(path):
+    """The root entity of an XML or YAML launch file (chosen by its extension; a file of
+    neither is tried as XML, then YAML, as launch tries every parser)."""
+    if path.endswith(tuple('.' + e for e in YAML_EXTENSIONS)):
+        return _load_yaml(path)
+    return _load_xml(path)
+
+
+def _load_xml(path):
+    return XmlEntity(ET.parse(path).getroot())
+
+
+def _load_yaml(path):
+    with open(path, encoding='utf-8') as f:
+        tree = yaml.safe_load(f)
+    if not isinstance(tree, dict) or len(tree) != 1:
+        raise RuntimeError('Expected only one root')
+    (type_name, body), = tree.items()
+    return YamlEntity(body, type_name)
+
+
+def get_launch_description_from_frontend_launch_file(path):
+    return parse_description(load(path))
+
+
+def frontend_format(path):
+    """'xml' / 'yaml' (the extension launch names in its errors)."""
+    name = os.path.basename(path)
+    return os.path.splitext(name)[1].lstrip('.')
