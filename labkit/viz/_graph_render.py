@@ -187,6 +187,12 @@ def _text(x, y, label, size, fill="black"):
             f'font-size="{_fmt(size)}" fill="{fill}">{escape(label)}</text>')
 
 
+def _remote(fqn):
+    """Is this node in another process (labkit.dds marks the nodes it discovered)?"""
+    from labkit.graph.registry import GRAPH
+    return any(getattr(n, "remote", False) and n.fqn == fqn for n in list(GRAPH.nodes))
+
+
 def _shape(kind, cx, cy, w, h, stroke=None):
     st = dict(_STYLE[kind], stroke=stroke or _STYLE[kind]["stroke"])
     paint = f'fill="{st["fill"]}" stroke="{st["stroke"]}"'
@@ -408,6 +414,9 @@ def render_svg(view: ViewGraph, *, rankdir: str = "auto") -> str:
         if v.qos_incompatible:   # rqt_graph: a red topic, the details on hover
             stroke, css = "red", v.kind + " qos-incompatible"
             tip += "\n\n" + _qos_tooltip(v)
+        if v.kind == "node" and _remote(v.name):   # another process's node, seen over DDS
+            stroke, css = "#2e7d32", "node remote"
+            tip += "\n(remote: over DDS)"
         out.append(f'<g class="vertex {css}"><title>{escape(tip)}</title>'
                    f'{_shape(v.kind, cx, cy, vw, vh, stroke)}{_text(cx, cy, display_name(view, v), FONT_SIZE)}</g>')
     out.append("</svg>")

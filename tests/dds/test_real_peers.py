@@ -347,6 +347,7 @@ def execute(goal):
     for i in range(1, goal.request.order):
         seq.append(seq[i] + seq[i - 1])
         goal.publish_feedback(Fibonacci.Feedback(sequence=seq))
+        time.sleep(0.2)   # like the tutorial's server (1 s there); DDS matching needs a moment
     goal.succeed()
     return Fibonacci.Result(sequence=seq)
 ActionServer(node, Fibonacci, 'fibonacci', execute)

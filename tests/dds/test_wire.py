@@ -139,3 +139,34 @@ def test_connect_refuses_virtual_time_in_one_line():
     assert not dds.is_connected()
     r = labkit.ros2("connect")
     assert r.returncode == 1 and r.stderr.count("\n") == 1
+
+
+def test_graph_view_draws_remote_nodes_distinctly():
+    """A node the bridge discovered (a RemoteNode) is an ordinary graph entry: rclpy's
+    graph queries list it, and the graph view paints it green with class 'remote'."""
+    import labkit
+    from labkit.dds.bridge import RemoteNode
+    from labkit.graph.registry import GRAPH, Endpoint, PUB
+    from labkit.rclpy.qos import QoSProfile
+    from labkit.viz.graph_view import GraphView
+    from labkit import rclpy
+    from labkit.interfaces import get_type
+    String = get_type("std_msgs/msg/String")
+    labkit.reset()
+    rclpy.init()
+    local = rclpy.create_node("local_listener")
+    local.create_subscription(String, "chatter", lambda m: None, 10)
+    remote = RemoteNode("robot_talker", "/", 0, bytes(16))
+    with GRAPH.lock:
+        GRAPH.nodes.append(remote)
+        GRAPH.endpoints[PUB].setdefault("/chatter", []).append(
+            Endpoint(PUB, "/chatter", "std_msgs/msg/String", remote, QoSProfile(depth=10)))
+        GRAPH._rematch("/chatter")
+        GRAPH._changed()
+    assert ("robot_talker", "/") in local.get_node_names_and_namespaces()
+    assert local.count_publishers("/chatter") == 1
+    svg = GraphView().svg()
+    assert '<g class="vertex node remote"><title>/robot_talker\n(remote: over DDS)' in svg
+    assert '<g class="vertex node"><title>/local_listener' in svg
+    labkit.reset()
+    assert remote not in GRAPH.nodes
