@@ -57,8 +57,10 @@ book: setup
 book-exec: setup
 	$(PY) -m labkit.tools.execute_notebooks book
 
+# JupyterLab, live time, on a working copy of the book in lab/ (git ignores it):
+# autosave never touches the shipped notebooks (see labkit/tools/lab.py).
 lab: setup
-	LABKIT_TIME=live $(PY) -m jupyterlab --ip=127.0.0.1 --notebook-dir=book
+	$(PY) -m labkit.tools.lab
 
 bench: setup
 	for f in benchmarks/*.py; do echo "== $$f"; $(PY) $$f || exit 1; done

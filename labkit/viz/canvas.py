@@ -10,6 +10,17 @@ The live widget is an ipycanvas MultiCanvas with three layers: the background
 colour, the pen trails (drawn incrementally from the simulator's pen log), and
 the turtles. A daemon thread redraws at most `fps` times a second and only
 after the simulator reported a change, so an idle canvas costs nothing.
+
+Each canvas sends its drawing through a command channel of its own (an ipycanvas
+canvas manager), one message per frame. ipycanvas's default is one manager for
+the whole kernel, whose "current canvas" is shared state: with several canvases
+drawing from their own threads (a long session: every `TurtleCanvas.attach()`
+follows the newest turtlesim), a command set from one thread while another
+thread's frame was being sent went missing, together with the "switch to this
+canvas" before it, so the new canvas's first frame was drawn onto another canvas
+and the new one stayed white; and in the browser one failed command stops that
+manager's queue for every canvas that shares it. One manager per canvas keeps
+every canvas's commands, and any failure, to itself.
 """
 import io
 import threading
@@ -21,8 +32,6 @@ from PIL import Image
 from labkit.sims.turtlesim import physics, sprites
 
 SIZE = physics.WINDOW_SIZE
-# ipycanvas batches commands in one global manager: draw from one thread at a time
-_DRAW_LOCK = threading.Lock()
 
 
 # ------------------------------------------------------------------ static rendering
@@ -94,6 +103,9 @@ class TurtleCanvas:
         self._stop = threading.Event()
         self._thread = None
         self._drawn = None              # (background, turtles, pen seq) last sent
+        self._manager = None            # this canvas's own ipycanvas command channel
+        self._draw_lock = threading.Lock()
+        self.messages_sent = 0          # frames flushed to the browser
 
     @classmethod
     def attach(cls, sim=None, fps=30):
@@ -137,9 +149,13 @@ class TurtleCanvas:
         return bytes(self.snapshot())
 
     def _ipython_display_(self):
+        from labkit import process
         from labkit.viz.display import show
         widget = self.widget
         self.start()
+        proc = process.current()
+        if proc is not process.MAIN and self not in proc.windows:
+            proc.windows.append(self)   # turtlesim's window: shown again if its cell re-runs
         show(widget, png=self.snapshot(), text="<turtlesim canvas>")
 
     # -- live face ----------------------------------------------------------------------
@@ -151,10 +167,17 @@ class TurtleCanvas:
 
     def _build(self):
         from ipycanvas import MultiCanvas
+        from ipycanvas.canvas import _CanvasManager
+        # a command channel of its own that holds every command until the frame is
+        # complete (see the module's docstring)
+        self._manager = _CanvasManager()
+        self._manager._caching = True
         self._widget = MultiCanvas(3, width=SIZE, height=SIZE)
         self._layers = [self._widget[i] for i in range(3)]
-        trails = self._layers[1]
-        trails.line_cap = "square"      # Qt's default pen cap
+        for layer in self._layers:
+            layer._canvas_manager = self._manager
+        with self._draw_lock:
+            self._layers[1].line_cap = "square"      # Qt's default pen cap
         self._draw(full=True)
         self.world.listeners.append(self._wake.set)
 
@@ -188,6 +211,7 @@ class TurtleCanvas:
         self.stop()
         if self._widget is not None:
             self._widget.close()
+            self._manager.close()
 
     def _follow(self):
         period = 1.0 / self.fps
@@ -224,8 +248,17 @@ class TurtleCanvas:
         return img
 
     def _draw(self, full=False):
-        """Send what changed since the last frame to the browser."""
-        from ipycanvas import hold_canvas
+        """Send what changed since the last frame to the browser (one message)."""
+        with self._draw_lock:
+            try:
+                self._draw_frame(full)
+            finally:
+                # whatever was queued goes out whole, even after an error half-way
+                if self._manager._commands_cache:
+                    self.messages_sent += 1
+                self._manager.flush()
+
+    def _draw_frame(self, full):
         background_layer, trails, turtle_layer = self._layers
         with self.world.lock:
             background, turtles, seq = self.world.snapshot()
@@ -234,24 +267,23 @@ class TurtleCanvas:
             pixels = self.world.path.pixels.copy() if ops is None else None
         if last is not None and (background, turtles, seq) == last and not full:
             return
-        with _DRAW_LOCK, hold_canvas():       # one message per frame
-            if full or last is None or last[0] != background:
-                background_layer.fill_style = "rgb(%d, %d, %d)" % background
-                background_layer.fill_rect(0, 0, SIZE, SIZE)
-            if ops is None:
-                trails.clear()
-                trails.put_image_data(pixels, 0, 0)
-            elif ops:
-                _stroke_ops(trails, ops)
-            if full or last is None or last[1] != turtles:
-                turtle_layer.clear()
-                for _, x, y, orient, look in turtles:
-                    turtle_layer.save()
-                    turtle_layer.translate(x, y)
-                    turtle_layer.rotate(-orient)     # canvas angles turn clockwise (y down)
-                    turtle_layer.draw_image(self._sprite_image(look), -sprites.SIZE / 2,
-                                            -sprites.SIZE / 2)
-                    turtle_layer.restore()
+        if full or last is None or last[0] != background:
+            background_layer.fill_style = "rgb(%d, %d, %d)" % background
+            background_layer.fill_rect(0, 0, SIZE, SIZE)
+        if ops is None:
+            trails.clear()
+            trails.put_image_data(pixels, 0, 0)
+        elif ops:
+            _stroke_ops(trails, ops)
+        if full or last is None or last[1] != turtles:
+            turtle_layer.clear()
+            for _, x, y, orient, look in turtles:
+                turtle_layer.save()
+                turtle_layer.translate(x, y)
+                turtle_layer.rotate(-orient)     # canvas angles turn clockwise (y down)
+                turtle_layer.draw_image(self._sprite_image(look), -sprites.SIZE / 2,
+                                        -sprites.SIZE / 2)
+                turtle_layer.restore()
         self._drawn = (background, turtles, seq)
         self.frames_drawn += 1
 
