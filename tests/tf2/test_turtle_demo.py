@@ -57,6 +57,10 @@ def test_turtle2_follows_turtle1():
     assert start > 3.0                       # spawned at (4, 2), turtle1 at the centre
     t = w.buffer.lookup_transform("world", "turtle1", Time())
     assert t.transform.translation.x == w.poses["turtle1"].x
+    # a pose in the plane: a turn about z only, by theta
+    theta = w.poses["turtle1"].theta
+    r = t.transform.rotation
+    assert (r.x, r.y, r.z, r.w) == pytest.approx((0, 0, math.sin(theta / 2), math.cos(theta / 2)))
     w.spin_for(15.0)
     assert w.distance() < 0.5 * start
     # and it keeps following when turtle1 moves
