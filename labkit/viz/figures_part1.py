@@ -186,7 +186,7 @@ def message_on_the_wire(msg, *, definition: str | None = None) -> SVG:
     for i, (name, idl) in enumerate(fields):
         y = top + 26 + (i + 1) * line_h
         value = getattr(msg, name)
-        shown = repr(value)
+        shown = f"{value:.7g}" if isinstance(value, float) else repr(value)
         if len(shown) > 14:
             shown = shown[:13] + "…"
         body.append(_rect(418, y - 14, 284, line_h - 1, fill=colour.get(name, "#eee"),
