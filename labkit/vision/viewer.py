@@ -147,6 +147,7 @@ class FrameLog:
         self.node_name = node_name
         self.times = []
         self.start = None            # the node clock when the subscriber started
+        self._clock = None
         from labkit import process
         self.process = process.start(name=node_name, main=self._main, args=[node_name], echo=False)
 
@@ -156,7 +157,7 @@ class FrameLog:
 
         rclpy.init(args=args)
         node = rclpy.create_node(self.node_name)
-        clock = node.get_clock()
+        clock = self._clock = node.get_clock()
         self.start = clock.now().nanoseconds * 1e-9
         node.create_subscription(get_type('sensor_msgs/msg/Image'), self.topic,
                                  lambda _msg: self.times.append(clock.now().nanoseconds * 1e-9),
@@ -167,6 +168,12 @@ class FrameLog:
             pass
         node.destroy_node()
         rclpy.try_shutdown()
+
+    def elapsed(self):
+        """Seconds of the node's clock since the log started."""
+        if self._clock is None:
+            return 0.0
+        return self._clock.now().nanoseconds * 1e-9 - self.start
 
     def count(self, begin=None, end=None):
         """Messages that arrived in [begin, end) seconds after the log started."""

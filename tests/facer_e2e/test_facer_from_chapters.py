@@ -30,8 +30,9 @@ ALL_PACKAGES = ('facer_interfaces', 'facer_input', 'facer_handle', 'facer_output
 COPIES = {
     'ch13_nodes': (('facer_interfaces',), ()),
     'ch14_node_tasks': (ALL_PACKAGES, ('capture_image.py', 'identify_image.py',
-                                       'visual_interaction.py', 'launch')),
-    'ch15_parameters': (ALL_PACKAGES, ('capture_image.py', 'launch')),
+                                       'visual_interaction.py', 'launch', 'data', 'config')),
+    'ch15_parameters': (ALL_PACKAGES, ('capture_image.py', 'identify_image.py', 'launch',
+                                       'config')),
 }
 CD = re.compile(r"^ament\.cd\('([^']*)'\)")
 PKG_CREATE = re.compile(r"^(?:%ros2 |labkit\.ros2\(')(pkg create [^')]*)")
@@ -163,12 +164,17 @@ def test_chapters_write_the_reference_robot(facer_ws):
                 'facer_input/launch/python_parameters_launch.py',
                 'facer_input/setup.py', 'facer_input/package.xml',
                 'facer_handle/facer_handle/identify_image.py', 'facer_handle/package.xml',
+                'facer_handle/setup.py', 'facer_input/config/facer_params.yaml',
+                'facer_input/launch/facer_bringup_launch.py',
                 'facer_output/facer_output/visual_interaction.py', 'facer_output/package.xml',
                 'facer_interfaces/CMakeLists.txt', 'facer_interfaces/package.xml',
                 'facer_interfaces/srv/FaceResult.srv', 'facer_interfaces/action/CameraState.action']:
         assert filecmp.cmp(os.path.join(src, rel), os.path.join(FACER_SRC, rel), shallow=False), rel
     share = os.path.join(home, 'facer_ws', 'install', 'facer_input', 'share', 'facer_input')
     assert os.path.isfile(os.path.join(share, 'launch', 'python_parameters_launch.py'))
+    assert os.path.isfile(os.path.join(share, 'config', 'facer_params.yaml'))
+    handle = os.path.join(home, 'facer_ws', 'install', 'facer_handle', 'share', 'facer_handle')
+    assert os.path.isfile(os.path.join(handle, 'data', 'haarcascade_frontalface_default.xml'))
 
 
 def test_face_result_follows_the_frames(graph):

@@ -61,3 +61,14 @@ def test_frame_log_counts_frames_per_second(virtual):
     assert log.count(1, 2) == 4
     log.close()
     assert labkit.ros2('node list').stdout.split() == ['/capture_image']
+
+
+def test_frame_rate_chart_fits_the_column_with_legible_labels():
+    import re
+    from labkit.vision.rate_chart import frame_rate_svg
+    svg = frame_rate_svg([(t, 10 if t < 4 else 2) for t in range(8)], [(0, '0.1 秒'), (4, '0.5 秒')])
+    assert 'width="720"' in svg
+    sizes = [int(s) for s in re.findall(r'font-size="(\d+)"', svg)]
+    assert sizes and min(sizes) >= 12
+    assert 'timer_period = 0.1 秒' in svg and 'timer_period = 0.5 秒' in svg
+    assert svg.count('fill="#4a78b0"') == 8          # one bar a second
