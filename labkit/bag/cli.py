@@ -219,8 +219,12 @@ def _play_args(p):
 
 def play(args, io):
     from labkit.bag.player import Player
-    from labkit.bag.storage import BagError
+    from labkit.bag.storage import BagError, BagReader
+    try:   # Humble's Player opens the bag before it plays: its error is a plain line
+        reader = BagReader(args.bag_path, args.storage)
+    except BagError as e:
+        return str(e)
     try:
-        return Player(args).play()
+        return Player(args).play(reader)
     except BagError as e:
         return f'[ERROR] [rosbag2_player]: Failed to play: {e}'

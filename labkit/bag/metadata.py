@@ -131,6 +131,9 @@ def _yaml_cpp_what(error):
     import yaml
     if isinstance(error, KeyError):       # InvalidNode: no mark
         return f'invalid node; first invalid key: "{error.args[0]}"'
+    if isinstance(error, _NotAMap):       # BadSubscript, marked at the document's start
+        return ('yaml-cpp: error at line 1, column 1: operator[] call on a scalar '
+                '(key: "rosbag2_bagfile_information")')
     mark = getattr(error, 'problem_mark', None)
     if isinstance(error, yaml.MarkedYAMLError) and mark is not None:
         problem = error.problem or error.context or 'parse error'
@@ -148,10 +151,17 @@ def read_metadata(directory):
         raise MetadataError(f'Exception on parsing info file: {_yaml_cpp_what(e)}') from None
 
 
+class _NotAMap(Exception):
+    pass
+
+
 def _read_metadata(directory):
     import yaml
     with open(os.path.join(directory, METADATA_FILENAME)) as f:
-        node = yaml.safe_load(f)['rosbag2_bagfile_information']
+        document = yaml.safe_load(f)
+    if not isinstance(document, dict):
+        raise _NotAMap()
+    node = document['rosbag2_bagfile_information']
     version = int(node['version'])
     topics = []
     for ti in node.get('topics_with_message_count') or []:

@@ -20,11 +20,11 @@ class Player:
     def __init__(self, args):
         self.args = args
 
-    def play(self):
+    def play(self, reader=None):
         from labkit.bag.storage import BagReader
         from labkit.interfaces import deserialize
         a = self.args
-        reader = BagReader(a.bag_path, a.storage)
+        reader = reader or BagReader(a.bag_path, a.storage)
         remap = dict(r.split(':=', 1) for r in (a.remap or []) if ':=' in r)
         try:
             with CliNode('rosbag2_player', default_context=True) as node:
