@@ -8,7 +8,7 @@ import html
 
 import ipywidgets as widgets
 
-from labkit.sims.turtlesim.keys import BANNER, key_name
+from labkit.sims.turtlesim.keys import key_name
 
 # button label, key name, tooltip
 _ROTATIONS = [("E", "e"), ("R", "r"), ("T", "t"), ("D", "d"), ("F", "f"), ("G", "g"),
@@ -53,20 +53,23 @@ class TeleopWidget:
         self._press = press
         self.pressed = []            # key names seen, newest last (for display and tests)
         self.status = widgets.HTML(self._status_text())
-        arrows = widgets.GridBox(
-            [self._button(label, key) for label, key in _ARROWS],
-            layout=widgets.Layout(grid_template_columns="repeat(3, 44px)", grid_gap="4px"))
-        rotations = widgets.GridBox(
-            [self._button(label, key) for label, key in _ROTATIONS],
-            layout=widgets.Layout(grid_template_columns="repeat(3, 44px)", grid_gap="4px"))
+        # boxes sized to their keys, never scrolled (ipywidgets boxes scroll by default)
+        grid = dict(grid_template_columns="repeat(3, 44px)", grid_gap="4px",
+                    overflow="visible")
+        arrows = widgets.GridBox([self._button(label, key) for label, key in _ARROWS],
+                                 layout=widgets.Layout(**grid))
+        rotations = widgets.GridBox([self._button(label, key) for label, key in _ROTATIONS],
+                                    layout=widgets.Layout(**grid))
         quit_button = self._button("Q", "q", width="60px")
-        help_text = widgets.HTML("<pre style='margin:0;font-size:11px'>%s</pre>" % BANNER)
+        # the key help (BANNER) is printed once, by turtle_teleop_key itself, like in its
+        # terminal: the pad does not repeat it
         self.box = widgets.VBox(
-            [widgets.HTML("<b>%s</b> &mdash; click here, then type" % title), help_text,
+            [widgets.HTML("<b>%s</b> &mdash; click here, then type" % title),
              widgets.HBox([arrows, _spacer(), rotations, _spacer(), quit_button],
-                          layout=widgets.Layout(align_items="center")),
+                          layout=widgets.Layout(align_items="center", overflow="visible")),
              self.status],
-            layout=widgets.Layout(border="1px solid #888", padding="6px", width="fit-content"))
+            layout=widgets.Layout(border="1px solid #888", padding="6px", width="fit-content",
+                                  overflow="visible"))
         self.events = Event(source=self.box, watched_events=["keydown"],
                             prevent_default_action=True)
         self.events.on_dom_event(self._on_key)
@@ -100,10 +103,87 @@ class TeleopWidget:
         return "<span style='font-size:11px;color:#555'>last key: %s</span>" % last
 
     def show(self):
+        from labkit import process
         from labkit.viz.display import show
+        proc = process.current()
+        if proc is not process.MAIN and self not in proc.windows:
+            proc.windows.append(self)   # shown again if the cell that started it re-runs
         # Static face (HTML book): a picture of the key pad. The banner itself is
         # already in the process output, so it is not repeated here.
         show(self.box, text="<turtle_teleop_key keyboard>", html=static_keypad_html())
+
+    def _ipython_display_(self):
+        self.show()
+
+    def close(self):
+        self.events.close()
+        self.box.close()
+
+
+class KeyPad:
+    """A key pad for a keyboard node that reads single characters (teleop_twist_keyboard):
+    a focusable box taking real key presses, and a button for each key in `groups`
+    (rows of characters). `press(char)` gets each character as the terminal would."""
+
+    def __init__(self, press, title, groups, accept=lambda ch: len(ch) == 1):
+        from ipyevents import Event
+        self._press = press
+        self._accept = accept
+        self.title = title
+        self.groups = groups
+        self.pressed = []
+        self.status = widgets.HTML(self._status_text())
+        pads = []
+        for rows in groups:
+            width = max(len(row) for row in rows)
+            keys = [self._button(ch) for row in rows for ch in row.ljust(width)]
+            pads.append(widgets.GridBox(keys, layout=widgets.Layout(
+                grid_template_columns=f"repeat({width}, 44px)", grid_gap="4px",
+                overflow="visible")))
+            pads.append(_spacer())
+        self.box = widgets.VBox(
+            [widgets.HTML("<b>%s</b> &mdash; click here, then type" % html.escape(title)),
+             widgets.HBox(pads[:-1], layout=widgets.Layout(align_items="center",
+                                                           overflow="visible")),
+             self.status],
+            layout=widgets.Layout(border="1px solid #888", padding="6px", width="fit-content",
+                                  overflow="visible"))
+        self.events = Event(source=self.box, watched_events=["keydown"],
+                            prevent_default_action=True)
+        self.events.on_dom_event(lambda event: self.press(event.get("key", "")))
+
+    def _button(self, ch):
+        if ch == " ":
+            return widgets.Label("", layout=widgets.Layout(width="44px"))
+        button = widgets.Button(description=ch, layout=widgets.Layout(width="44px"))
+        button.on_click(lambda _: self.press(ch))
+        return button
+
+    def press(self, ch):
+        if not self._accept(ch):
+            return
+        self.pressed.append(ch)
+        self.status.value = self._status_text()
+        self._press(ch)
+
+    def _status_text(self):
+        last = self.pressed[-1] if self.pressed else "none"
+        return "<span style='font-size:11px;color:#555'>last key: %s</span>" % html.escape(last)
+
+    def static_html(self):
+        cell = "display:inline-block;vertical-align:middle;margin-right:18px"
+        pads = "".join(f"<div style='{cell}'>{_keys_html([list(r) for r in rows])}</div>"
+                       for rows in self.groups)
+        return ("<div style='border:1px solid #888;padding:6px;display:inline-block'>"
+                f"<b>{html.escape(self.title)}</b><br>{pads}</div>")
+
+    def show(self):
+        from labkit import process
+        from labkit.viz.display import show
+        proc = process.current()
+        if proc is not process.MAIN and self not in proc.windows:
+            proc.windows.append(self)
+        show(self.box, text=f"<{self.title} keyboard>", html=self.static_html())
 
     def _ipython_display_(self):
         self.show()

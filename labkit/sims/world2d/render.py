@@ -106,13 +106,103 @@ def png_bytes(sim=None, pixels=480, rays=True):
 
 
 def picture(sim=None, pixels=480, rays=True, path=None):
-    """An IPython PNG of the world now (also saved to `path` if given)."""
+    """An IPython PNG of the world now (also saved to `path` if given). In live
+    JupyterLab it is the live view (`LiveView`): it follows the robot while it drives."""
+    if path is None and _live_kernel():
+        return LiveView(sim, pixels=pixels, rays=rays)
     data = png_bytes(sim, pixels, rays)
     if path:
         with open(path, "wb") as handle:
             handle.write(data)
     from IPython.display import Image
     return Image(data=data, format="png")
+
+
+def _live_kernel():
+    from labkit.graph import world
+    if world.mode() != "live":
+        return False
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
+
+class LiveView:
+    """The world from above, live: an image widget redrawn (at most `fps` times a
+    second, only when something moved) while the simulation runs; its static face is
+    the PNG of the moment it was shown. Like the turtlesim window, it costs nothing
+    while the robot stands still."""
+
+    def __init__(self, sim=None, pixels=480, rays=True, fps=8):
+        import threading
+        self.sim = _sim(sim)
+        self.pixels, self.rays, self.fps = pixels, rays, fps
+        self.frames_drawn = 0
+        self._widget = None
+        self._stop = threading.Event()
+        self._thread = None
+        self._drawn = None
+
+    def _state(self):
+        return (self.sim.time_ns if not self.sim.paused else None,
+                tuple(tuple(v.pose) for v in self.sim.vehicles))
+
+    def snapshot(self):
+        return png_bytes(self.sim, self.pixels, self.rays)
+
+    @property
+    def widget(self):
+        if self._widget is None:
+            import ipywidgets as widgets
+            self._widget = widgets.Image(value=self.snapshot(), format="png")
+            self._drawn = self._state()
+            self.frames_drawn = 1
+        return self._widget
+
+    def start(self):
+        import threading
+        if self._thread is not None and self._thread.is_alive():
+            return
+        self.widget
+        self._stop.clear()
+        self._thread = threading.Thread(target=self._follow, name="world2d-view", daemon=True)
+        from labkit import process
+        self._thread._labkit_world = True          # a viewer: no part in virtual time
+        self._thread._labkit_process = process.MAIN
+        self._thread.start()
+
+    def stop(self):
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join(timeout=2.0)
+        self._thread = None
+
+    def _follow(self):
+        from .sim import running
+        while not self._stop.wait(1.0 / self.fps):
+            if self.sim not in running():
+                break                           # the world was stopped: keep the last picture
+            state = self._state()
+            if state[1] == self._drawn[1]:
+                continue                        # nothing moved
+            try:
+                self._widget.value = self.snapshot()
+            except Exception:                   # a closed widget or a gone kernel
+                break
+            self._drawn = state
+            self.frames_drawn += 1
+
+    def _repr_png_(self):
+        return self.snapshot()
+
+    def _ipython_display_(self):
+        from labkit.viz.display import show
+        widget = self.widget
+        self.start()
+        show(widget, png=self.snapshot(), text="<world2d view>")
 
 
 def gif_bytes(sim=None, pixels=320, seconds=10.0, fps=10):

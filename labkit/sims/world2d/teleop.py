@@ -117,16 +117,33 @@ def press(*keys, teleop=None):
             target.press(char)
 
 
+# the key pad a notebook shows (live time): moving keys, speed keys, up/down
+KEYPAD = [["uio", "jkl", "m,."], ["qwe", "zxc"], ["t", "b"]]
+
+
 def _open_terminal(teleop):
     try:
         from IPython import get_ipython
-        if get_ipython() is not None:
-            return None
+        shell = get_ipython()
+        if shell is not None:
+            return _open_keypad(teleop, shell)
     except ImportError:
         pass
     from labkit.sims._tty import open_terminal_keys
     return open_terminal_keys(teleop.press, teleop.quit_future.done, pass_ctrl_c=True,
                               name="teleop-twist-tty")
+
+
+def _open_keypad(teleop, shell):
+    """Live JupyterLab: a key pad in the cell, for the keys a terminal would take.
+    (Unattended runs type with `press(...)`: their stored output stays plain text.)"""
+    from labkit.graph import world
+    if getattr(shell, "kernel", None) is None or world.mode() != "live":
+        return None
+    from labkit.viz.teleop_widget import KeyPad
+    pad = KeyPad(teleop.press, "teleop_twist_keyboard", KEYPAD)
+    pad.show()
+    return pad
 
 
 def main(args=None):
