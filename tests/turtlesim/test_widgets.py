@@ -11,8 +11,12 @@ def test_key_events_and_buttons_map_to_key_names():
     for key in ("ArrowUp", "ArrowLeft", "g", "G", "x", "Shift", "q"):
         w._on_key({"type": "keydown", "key": key})
     assert got == ["up", "left", "g", "q"]          # capitals are not keys, as in the terminal
-    buttons = [b for row in w.box.children[2].children if hasattr(row, "children")
+    buttons = [b for row in w.box.children[1].children if hasattr(row, "children")
                for b in row.children if hasattr(b, "click")]
+    # the key help is the node's own output (printed once), not repeated in the pad;
+    # no box of the pad scrolls
+    assert not any("Use arrow keys" in getattr(c, "value", "") for c in w.box.children)
+    assert w.box.layout.overflow == "visible"
     by_label = {b.description: b for b in buttons}
     by_label["\u2193"].click()
     by_label["F"].click()
