@@ -72,6 +72,10 @@ def activate(*, quiet=False):
         return False
     if _finder is None:
         _finder = _LabkitFinder()
+    # the finder asks the interfaces layer which names are packages; let that layer (and
+    # numpy, which it imports) load now, not from inside the finder during someone's
+    # `import numpy` (numpy would then be executed twice and lose its submodules)
+    _packages()
     sys.meta_path.insert(0, _finder)
     from labkit import plugins
     plugins.register_all()

@@ -8,6 +8,9 @@ def present(namespace):
     """Give every class defined in this module rclpy's module name (call it at the end)."""
     here = namespace['__name__']
     public = 'rclpy' + here[len(PREFIX):]
-    for value in list(namespace.values()):
+    todo = list(namespace.values())
+    while todo:
+        value = todo.pop()
         if isinstance(value, type) and value.__module__ == here:
             value.__module__ = public
+            todo.extend(vars(value).values())      # nested classes (Parameter.Type)
