@@ -158,3 +158,68 @@ def test_labkit_reset_leaves_no_thread_and_rclpy_shutdown_after_it_is_fine():
     labkit.reset()
     assert [t.name for t in set(threading.enumerate()) - before] == []
     rclpy.shutdown()               # the notebook's last cell after a reset: no error
+
+
+NODE_HARNESS = r'''
+import widget from "WIDGET";
+globalThis.window = globalThis;
+const handlers = {}, sent = [];
+const model = {
+  get: (k) => ({viewer_js: process.env.VIEWER_JS, height: 300})[k],
+  on: (ev, fn) => { handlers[ev] = fn; },
+  off: (ev) => { delete handlers[ev]; },
+  send: (m) => sent.push(m),
+};
+const el = {style: {}};
+const cleanup = await widget.render({model, el});
+const bytes = Buffer.from(process.env.BLOB, "base64");
+handlers["msg:custom"]({type: "commands"},
+                       [new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength)]);
+cleanup();
+console.log(JSON.stringify({sent, height: el.style.height, played: window.PLAYED,
+                            handlers: Object.keys(handlers)}));
+'''
+
+FAKE_VIEWER = '''
+(function (root) {
+  if (typeof define === "function" && define.amd) { define([], function () {}); return; }
+  root.PLAYED = [];
+  root.MeshCat = {Viewer: function (el) {
+    this.handle_command_bytearray = function (b) { root.PLAYED.push(b.length); };
+  }};
+})(this);
+'''
+
+
+def test_widget_script_plays_what_the_kernel_sends(tmp_path):
+    """The widget's JS in node, with a stand-in for meshcat's viewer bundle: it loads the
+    UMD bundle even where an AMD `define` exists, asks for the scene, plays every
+    length-prefixed command of a buffer, and lets go of the comm when the view goes."""
+    import base64
+    import gzip
+    import json
+    node = shutil.which("node")
+    if node is None:
+        pytest.skip("node is not installed")
+    from labkit.viz import meshcat_widget
+    script = tmp_path / "widget.mjs"
+    script.write_text(meshcat_widget.MeshcatWidget._esm.read_text()
+                      if hasattr(meshcat_widget.MeshcatWidget._esm, "read_text")
+                      else str(meshcat_widget.MeshcatWidget._esm))
+    harness = tmp_path / "harness.mjs"
+    harness.write_text("globalThis.define = function () {}; globalThis.define.amd = true;\n"
+                       + NODE_HARNESS.replace("WIDGET", script.as_uri()))
+    commands = [{"type": "set_transform", "path": "/a", "matrix": [1.0] * 16},
+                {"type": "delete", "path": "/b"}]
+    blob = meshcat_view.commands_blob(commands)
+    viewer = base64.b64encode(gzip.compress(FAKE_VIEWER.encode())).decode()
+    env = dict(os.environ, VIEWER_JS=viewer, BLOB=base64.b64encode(blob).decode())
+    done = subprocess.run([node, str(harness)], capture_output=True, text=True, env=env,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    result = json.loads(done.stdout)
+    assert result["sent"] == [{"type": "ready"}]
+    assert result["height"] == "300px"
+    sizes = [len(meshcat_view._command_blob(c)) - 4 for c in commands]
+    assert result["played"] == sizes
+    assert result["handlers"] == []
