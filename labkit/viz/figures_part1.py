@@ -186,7 +186,9 @@ def message_on_the_wire(msg, *, definition: str | None = None) -> SVG:
     for i, (name, idl) in enumerate(fields):
         y = top + 26 + (i + 1) * line_h
         value = getattr(msg, name)
-        shown = f"{value:.7g}" if isinstance(value, float) else repr(value)
+        shown = repr(value)
+        if isinstance(value, float) and len(shown) > 10:     # a float32 read back: 7 digits say it
+            shown = f"{value:.7g}"
         if len(shown) > 14:
             shown = shown[:13] + "…"
         body.append(_rect(418, y - 14, 284, line_h - 1, fill=colour.get(name, "#eee"),
