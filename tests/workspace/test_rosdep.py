@@ -53,4 +53,26 @@ def test_help_init_update_say_what_they_would_do():
     assert 'rosdep install <stacks-and-packages>...' in rosdep.run_command('-h').stdout
     assert '20-default.list' in rosdep.run_command('init').stdout
     assert 'nothing was downloaded' in rosdep.run_command('update').stdout
-    assert rosdep.run_command('frobnicate').returncode == 1
+    r = rosdep.run_command('frobnicate')
+    assert r.returncode == 2 and r.stderr.endswith('rosdep: error: Unsupported command frobnicate.\n')
+
+
+def test_help_is_optparse_as_real_rosdep_prints_it():
+    out = rosdep.run_command('-h').stdout
+    # optparse: the whole usage text with its Commands list, then "Options:"
+    assert out.startswith('Usage: rosdep [options] <command> <args>\n\nCommands:\n')
+    assert '\n\nOptions:\n  -h, --help            show this help message and exit\n' in out
+    assert '  --rosdistro=ROS_DISTRO\n' in out and '  --from-paths          Affects' in out
+    assert 'rosdep what-needs <rosdeps>...' in out and 'rosdep search' not in out  # 0.25, not 0.26
+    assert 'usage:' not in out and 'options:' not in out
+    assert max(len(line) for line in out.splitlines()) <= 78
+
+
+def test_option_prefixes_and_errors_are_optparse():
+    # optparse accepts unambiguous prefixes: --from-path is --from-paths
+    assert rosdep.run_command('keys --from-path src').returncode == 0
+    r = rosdep.run_command('--bogus')
+    assert r.returncode == 2 and r.stderr.endswith('rosdep: error: no such option: --bogus\n')
+    r = rosdep.run_command('')
+    assert r.returncode == 2 and r.stderr.endswith('rosdep: error: Please enter a command\n')
+    assert rosdep.run_command('--version').stdout == '0.25.1\n'

@@ -8,8 +8,9 @@ Nothing is installed for real: every key labkit can resolve stands for
 something labkit already provides, and the output says so instead of
 pretending to run apt-get.
 """
-import argparse
+import optparse
 import os
+import types
 
 import yaml
 
@@ -18,6 +19,7 @@ DISTRO = 'humble'
 OS_KEY = 'ubuntu'
 KEY_TAGS = ('buildtool_depend', 'buildtool_export_depend', 'build_depend',
             'build_export_depend', 'exec_depend', 'depend', 'test_depend', 'doc_depend')
+VERSION = '0.25.1'
 SUCCESS = '#All required rosdeps installed successfully'
 UNRESOLVED = ('ERROR: the following packages/stacks could not have their rosdep keys resolved\n'
               'to system dependencies:')
@@ -72,46 +74,145 @@ def package_keys(paths):
 
 # ------------------------------------------------------------------ command line
 
-def _parser():
-    from labkit.commands import Parser
-    p = Parser(prog='rosdep', usage='rosdep [options] <command> <args>',
-               description='Commands:\n\n'
-                           'rosdep check <stacks-and-packages>...\n'
-                           '  check if the dependencies of package(s) have been met.\n\n'
-                           'rosdep install <stacks-and-packages>...\n'
-                           '  download and install the dependencies of a given package or '
-                           'packages.\n\n'
-                           'rosdep keys <stacks-and-packages>...\n'
-                           '  list the rosdep keys that the packages depend on.\n\n'
-                           'rosdep resolve <rosdeps>\n'
-                           '  resolve <rosdeps> to system dependencies\n\n'
-                           'rosdep init\n'
-                           '  initialize rosdep sources in /etc/ros/rosdep.  May require '
-                           'sudo.\n\n'
-                           'rosdep update\n'
-                           '  update the local rosdep database based on the rosdep sources.',
-               formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument('command', nargs='?', help=argparse.SUPPRESS)
-    p.add_argument('names', nargs='*', help=argparse.SUPPRESS)
-    p.add_argument('--from-paths', '--from-path', dest='from_paths', action='store_true',
-                   help='Affected commands recurse into directories passed as arguments '
-                        'and look for packages there.')
-    p.add_argument('-i', '--ignore-src', '--ignore-packages-from-source', dest='ignore_src',
-                   action='store_true',
-                   help='Affected commands ignore rosdep keys that are ROS packages in '
-                        'the given paths.')
-    p.add_argument('-y', '--default-yes', action='store_true',
-                   help='Tell the package manager to default to y or fail when installing')
-    p.add_argument('-r', dest='robust', action='store_true',
-                   help='Continue installing despite errors.')
-    p.add_argument('-s', '--simulate', action='store_true',
-                   help='Simulate install')
-    p.add_argument('--rosdistro', default=None,
-                   help='Explicitly sets the ROS distro to use, overriding the normal '
-                        'method of detecting the ROS distro.')
-    p.add_argument('-t', '--dependency-types', action='append', default=None,
-                   choices=['build', 'buildtool', 'build_export', 'buildtool_export',
-                            'exec', 'test', 'doc'])
+# The help of rosdep 0.22.0-0.25.1 (what Humble users got from the ROS apt repository
+# 2022-2024). rosdep parses with optparse, so the help is the whole usage text (with the
+# Commands list) and then "Options:". Differences from newer releases, written down:
+# 0.26 adds a `rosdep search` command to this list. The `-t` help prints a Python set,
+# whose order changes from run to run on a real machine; labkit prints one fixed order.
+_COMMANDS = """rosdep [options] <command> <args>
+
+Commands:
+
+rosdep check <stacks-and-packages>...
+  check if the dependencies of package(s) have been met.
+
+rosdep install <stacks-and-packages>...
+  download and install the dependencies of a given package or packages.
+
+rosdep db
+  generate the dependency database and print it to the console.
+
+rosdep init
+  initialize rosdep sources in /etc/ros/rosdep.  May require sudo.
+
+rosdep keys <stacks-and-packages>...
+  list the rosdep keys that the packages depend on.
+
+rosdep resolve <rosdeps>
+  resolve <rosdeps> to system dependencies
+
+rosdep update
+  update the local rosdep database based on the rosdep sources.
+
+rosdep what-needs <rosdeps>...
+  print a list of packages that declare a rosdep on (at least
+  one of) <rosdeps>
+
+rosdep where-defined <rosdeps>...
+  print a list of yaml files that declare a rosdep on (at least
+  one of) <rosdeps>
+
+rosdep fix-permissions
+  Recursively change the permissions of the user's ros home directory.
+  May require sudo.  Can be useful to fix permissions after calling
+  "rosdep update" with sudo accidentally.
+"""
+DEPENDENCY_TYPES = ('exec', 'test', 'buildtool', 'doc', 'buildtool_export', 'build',
+                    'build_export')
+
+
+class _OptionParser(optparse.OptionParser):
+    """optparse that writes into the command's streams and never calls sys.exit."""
+
+    def __init__(self, io):
+        self.io = io
+        super().__init__(usage=_COMMANDS, prog='rosdep',
+                         formatter=optparse.IndentedHelpFormatter(width=78))
+
+    def print_usage(self, file=None):
+        self.io.err.write(self.get_usage())
+
+    def print_help(self, file=None):
+        self.io.out.write(self.format_help())
+
+    def exit(self, status=0, msg=None):
+        if msg:
+            self.io.err.write(msg)
+        raise _Exit(status)
+
+
+class _Exit(Exception):
+    def __init__(self, status):
+        super().__init__(status)
+        self.status = status
+
+
+def _parser(io):
+    from labkit.ament import files
+    cache = files.display(files.expand('~/.ros/rosdep/sources.cache'))
+    p = _OptionParser(io)
+    add = p.add_option
+    add('--os', dest='os_override', metavar='OS_NAME:OS_VERSION',
+        help='Override OS name and version (colon-separated), e.g. ubuntu:lucid')
+    add('-c', '--sources-cache-dir', dest='sources_cache_dir', metavar='SOURCES_CACHE_DIR',
+        help='Override ' + cache)
+    flags = (
+        (('--verbose', '-v'), 'verbose', 'verbose display'),
+        (('--version',), 'print_version', 'print just the rosdep version, then exit'),
+        (('--all-versions',), 'print_all_versions',
+         'print rosdep version and version of installers, then exit'),
+        (('--reinstall',), 'reinstall', '(re)install all dependencies, even if already installed'),
+        (('--default-yes', '-y'), 'default_yes',
+         'Tell the package manager to default to y or fail when installing'),
+        (('--simulate', '-s'), 'simulate', 'Simulate install'),
+        (('-r',), 'robust', 'Continue installing despite errors.'),
+        (('-q',), 'quiet', 'Quiet. Suppress output except for errors.'),
+        (('-a', '--all'), 'rosdep_all', 'select all packages'),
+    )
+    for names, dest, text in flags:
+        add(*names, dest=dest, action='store_true', default=False, help=text)
+    add('-n', dest='recursive', default=True, action='store_false',
+        help="Do not consider implicit/recursive dependencies.  Only valid with 'keys', "
+             "'check', and 'install' commands.")
+    add('--ignore-packages-from-source', '--ignore-src', '-i', dest='ignore_src',
+        action='store_true', default=False,
+        help="Affects the 'check', 'install', and 'keys' verbs. If specified then rosdep "
+             "will ignore keys that are found to be catkin or ament packages anywhere in "
+             "the ROS_PACKAGE_PATH, AMENT_PREFIX_PATH or in any of the directories given "
+             "by the --from-paths option.")
+    add('--skip-keys', dest='skip_keys', action='append', default=[],
+        help="Affects the 'check' and 'install' verbs. The specified rosdep keys will be "
+             "ignored, i.e. not resolved and not installed. The option can be supplied "
+             "multiple times. A space separated list of rosdep keys can also be passed as "
+             "a string. A more permanent solution to locally ignore a rosdep key is "
+             "creating a local rosdep rule with an empty list of packages (include it in "
+             "/etc/ros/rosdep/sources.list.d/ before the defaults).")
+    add('--filter-for-installers', action='append', default=[],
+        help="Affects the 'db' verb. If supplied, the output of the 'db' command is "
+             "filtered to only list packages whose installer is in the provided list. The "
+             "option can be supplied multiple times. A space separated list of installers "
+             "can also be passed as a string. Example: "
+             "`--filter-for-installers \"apt pip\"`")
+    add('--from-paths', dest='from_paths', action='store_true', default=False,
+        help="Affects the 'check', 'keys', and 'install' verbs. If specified the arguments "
+             "to those verbs will be considered paths to be searched, acting on all catkin "
+             "packages found there in.")
+    add('--rosdistro', dest='rosdistro', default=None, metavar='ROS_DISTRO',
+        help="Explicitly sets the ROS distro to use, overriding the normal method of "
+             "detecting the ROS distro using the ROS_DISTRO environment variable. When "
+             "used with the 'update' verb, only the specified distro will be updated.")
+    add('--as-root', default=[], action='append', metavar='INSTALLER_KEY:<bool>',
+        help="Override whether sudo is used for a specific installer, e.g. '--as-root "
+             "pip:false' or '--as-root \"pip:no homebrew:yes\"'. Can be specified "
+             "multiple times.")
+    add('--include-eol-distros', dest='include_eol_distros', action='store_true',
+        default=False,
+        help="Affects the 'update' verb. If specified end-of-life distros are being "
+             "fetched too.")
+    add('-t', '--dependency-types', dest='dependency_types', type='choice',
+        choices=list(DEPENDENCY_TYPES), default=[], action='append',
+        help='Dependency types to install, can be given multiple times. Choose from '
+             '{%s}. Default: all except doc.' % ', '.join(repr(t) for t in DEPENDENCY_TYPES))
     return p
 
 
@@ -119,7 +220,7 @@ def run_command(command):
     """Run one rosdep command line (without `rosdep`); returns a CompletedCommand."""
     import shlex
 
-    from labkit.commands import CompletedCommand, ParserExit, Streams, set_parse_streams
+    from labkit.commands import CompletedCommand, Streams
     from labkit.commands import Recorder as _Recorder
     argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['rosdep']:
@@ -127,27 +228,37 @@ def run_command(command):
     chunks = []
     out, err = _Recorder('stdout', chunks), _Recorder('stderr', chunks)
     io = Streams(out, err)
-    set_parse_streams(io)
-    parser = _parser()
+    parser = _parser(io)
     try:
-        args = parser.parse_intermixed_args(argv)
-    except ParserExit as e:
+        options, rest = parser.parse_args(argv)
+    except _Exit as e:
         return CompletedCommand(['rosdep', *argv], e.status, out.getvalue(), err.getvalue(),
                                 None, chunks)
+    args = types.SimpleNamespace(**vars(options), command=rest[0] if rest else None,
+                                 names=rest[1:])
     verbs = {'install': install, 'check': check, 'keys': keys_verb, 'resolve': resolve_verb,
              'init': init, 'update': update}
-    if args.command is None:
-        parser.print_help()
-        rc = 0
-    elif args.command not in verbs:
-        io.eprint(f'Unsupported command {args.command}.')
-        rc = 1
-    else:
-        if args.rosdistro not in (None, DISTRO):
+    known = ('check', 'db', 'install', 'init', 'keys', 'resolve', 'update', 'what-needs',
+             'what_needs', 'where-defined', 'where_defined', 'fix-permissions')
+    try:
+        if args.print_version or args.print_all_versions:
+            io.print(VERSION)
+            rc = 0
+        elif args.command is None:
+            parser.error('Please enter a command')
+        elif args.command not in known:
+            parser.error(f'Unsupported command {args.command}.')
+        elif args.command not in verbs:
+            io.eprint(f'labkit: rosdep {args.command} is not simulated (labkit has check, '
+                      'install, keys, resolve, init, update)')
+            rc = 1
+        elif args.rosdistro not in (None, DISTRO):
             io.eprint(f'labkit: only the {DISTRO} key tables are bundled')
             rc = 1
         else:
             rc = verbs[args.command](args, io)
+    except _Exit as e:
+        rc = e.status
     return CompletedCommand(['rosdep', *argv], rc, out.getvalue(), err.getvalue(), None,
                             chunks)
 
