@@ -5,8 +5,9 @@ Launch files run unchanged: `LaunchDescription`, `launch.actions`,
 and `launch_ros.actions.Node` (labkit.launch_ros). `LaunchService` (service.py)
 visits the description and starts each node as a labkit process with the
 console lines of `ros2 launch`; `launch.events` and `launch.event_handlers`
-react to processes starting, writing and exiting, and to shutdown. XML/YAML
-launch files and composable nodes are not there yet.
+react to processes starting, writing and exiting, and to shutdown. XML and YAML
+launch files go through the front-ends in frontend.py (`launch_xml`, `launch_yaml`).
+Composable nodes are not there yet.
 """
 from labkit.launch import actions, conditions, launch_description_sources, substitutions  # noqa
 from labkit.launch import event_handlers, events  # noqa: F401
@@ -27,6 +28,8 @@ def register():
     from labkit.plugins import register_noun
     compat.register_alias('launch', 'labkit.launch')
     compat.register_alias('launch_ros', 'labkit.launch_ros')
+    compat.register_alias('launch_xml', 'labkit.launch.launch_xml')
+    compat.register_alias('launch_yaml', 'labkit.launch.launch_yaml')
     register_noun('launch', 'labkit.launch.cli', 'Run a launch file')
 
 

@@ -257,16 +257,28 @@ def test_frontend_source_class_includes_a_yaml_file(tmp_path):
         launch:
         - node: {pkg: turtlesim, exec: turtlesim_node, name: solo}
         ''')
+    _write(tmp_path, 'two.launch.xml', '''\
+        <launch><node pkg="turtlesim" exec="turtlesim_node" name="duo"/></launch>
+        ''')
     python = _write(tmp_path, 'top.launch.py', f'''\
         from launch import LaunchDescription
         from launch.actions import IncludeLaunchDescription
         from launch.launch_description_sources import FrontendLaunchDescriptionSource
+        from launch_xml.launch_description_sources import XMLLaunchDescriptionSource
+        from launch_yaml.launch_description_sources import YAMLLaunchDescriptionSource
 
 
         def generate_launch_description():
-            return LaunchDescription([IncludeLaunchDescription(
-                FrontendLaunchDescriptionSource({str(tmp_path / 'one.launch.yaml')!r}))])
+            return LaunchDescription([
+                IncludeLaunchDescription(
+                    FrontendLaunchDescriptionSource({str(tmp_path / 'one.launch.yaml')!r})),
+                IncludeLaunchDescription(
+                    XMLLaunchDescriptionSource({str(tmp_path / 'two.launch.xml')!r})),
+                IncludeLaunchDescription(
+                    YAMLLaunchDescriptionSource({str(tmp_path / 'one.launch.yaml')!r}),
+                    launch_arguments=[]),
+            ])
         ''')
     labkit.ros2(f'launch {python}')
     labkit.sleep(0.3)
-    assert labkit.ros2('node list').stdout.split() == ['/solo']
+    assert labkit.ros2('node list').stdout.split() == ['/duo', '/solo', '/solo']
