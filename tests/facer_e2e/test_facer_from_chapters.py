@@ -220,3 +220,45 @@ def test_visual_interaction_talks_to_both_servers(graph):
     assert '[visual_interaction]: 识别结果：检测到 1 张人脸' in out
     assert '[visual_interaction]: 目标请求成功' in out
     assert '[visual_interaction]: 摄像头状态：摄像头打开' in out
+
+
+def _cell_sources(name):
+    with open(os.path.join(PART2, name + '.ipynb'), encoding='utf-8') as f:
+        return [''.join(c['source']) for c in json.load(f)['cells'] if c['cell_type'] == 'code']
+
+
+def _run_check(source):
+    """Run a chapter's check cell; returns the Checker it built (its report goes to stdout)."""
+    namespace = {'labkit': labkit, 'ament': ament}
+    exec(compile(source, 'check', 'exec'), namespace)
+    return namespace['c']
+
+
+def test_exercise_15_1_check_catches_the_node_that_ignores_the_change(graph, tmp_path, capsys):
+    """15.3.1's trap: a capture_image without a parameters callback. Its parameter says 0.2,
+    its timer still ticks every 0.1 s: the check of exercise 15.1 must fail on it."""
+    from labkit import process
+    cells = _cell_sources('ch15_parameters')
+    check = [s for s in cells if "Checker('练习 15.1')" in s][0]
+    first = [s for s in cells if s.startswith(
+        '%%writefile src/facer_input/facer_input/capture_image.py')][0]
+    assert 'add_on_set_parameters_callback' not in first
+    path = tmp_path / 'capture_no_callback.py'
+    path.write_text(first.partition('\n')[2], encoding='utf-8')
+    import importlib.util
+    spec = importlib.util.spec_from_file_location('capture_no_callback', path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    process.start(name='capture_image', main=module.main, echo=False,
+                  args=['capture_image', '--ros-args', '-p', 'source:=facer_sample.avi'])
+    labkit.sleep(0.3)
+    assert labkit.ros2('param set /capture_image timer_period 0.2').stdout.strip() == \
+        'Set parameter successful'
+    c = _run_check(check)
+    assert not c.passed
+    assert '参数改了，定时器也跟着改了吗？' in capsys.readouterr().out
+    labkit.reset()
+    _camera(0.1)                              # the chapter's final node: the check passes
+    labkit.sleep(0.3)
+    labkit.ros2('param set /capture_image timer_period 0.2')
+    assert _run_check(check).passed
