@@ -77,6 +77,70 @@ def _timestamp():
 
 # ------------------------------------------------------------------ parser
 
+# `colcon --help` as Humble users see it on Ubuntu 22.04 (Python 3.10's argparse, 80
+# columns) with python3-colcon-common-extensions and python3-colcon-mixin from the ROS apt
+# repository (colcon-core of the 0.12-0.15 releases). labkit simulates build, list, test and
+# test-result; the other verbs are listed because the real tool lists them. Newer
+# colcon-core releases quote the defaults in backticks (`./log`, `~/.colcon`).
+USAGE = """usage: colcon [-h] [--log-base LOG_BASE] [--log-level LOG_LEVEL]
+              {build,extension-points,extensions,graph,info,list,metadata,mixin,test,test-result,version-check}
+              ...
+"""
+HELP = USAGE + """
+options:
+  -h, --help            show this help message and exit
+  --log-base LOG_BASE   The base path for all log directories (default: ./log,
+                        to disable: /dev/null)
+  --log-level LOG_LEVEL
+                        Set log level for the console output, either by
+                        numeric or string value (default: warning)
+
+colcon verbs:
+  build                 Build a set of packages
+  extension-points      List extension points
+  extensions            List extensions
+  graph                 Generate a visual representation of the dependency graph
+  info                  Package information
+  list                  List packages, optionally in topological ordering
+  metadata              Manage metadata of packages
+  mixin                 Manage CLI mixins
+  test                  Test a set of packages
+  test-result           Show the test results generated when testing a set of
+                        packages
+  version-check         Compare local package versions with PyPI
+
+  {build,extension-points,extensions,graph,info,list,metadata,mixin,test,test-result,version-check}
+                        call `colcon VERB -h` for specific help
+
+Environment variables:
+  CMAKE_COMMAND         The full path to the CMake executable
+  COLCON_ALL_SHELLS     Flag to enable all shell extensions
+  COLCON_COMPLETION_LOGFILE
+                        Set the logfile for completion time
+  COLCON_DEFAULTS_FILE  Set path to the yaml file containing the default values
+                        for the command line arguments (default:
+                        $COLCON_HOME/defaults.yaml)
+  COLCON_DEFAULT_EXECUTOR
+                        Select the default executor extension
+  COLCON_DEFAULT_OUTPUT_STYLE
+                        Select the default output style extension
+  COLCON_EXTENSION_BLOCKLIST
+                        Block extensions which should not be used
+  COLCON_HOME           Set the configuration directory (default: ~/.colcon)
+  COLCON_LOG_LEVEL      Set the log level (debug|10, info|20, warn|30,
+                        error|40, critical|50, or any other positive numeric
+                        value)
+  COLCON_WARNINGS       Set the warnings filter similar to PYTHONWARNINGS
+                        except that the module entry is implicitly set to
+                        'colcon.*'
+  CTEST_COMMAND         The full path to the CTest executable
+  POWERSHELL_COMMAND    The full path to the PowerShell executable
+
+For more help and usage tips, see https://colcon.readthedocs.io
+"""
+
+
+
 def _parser():
     from labkit.commands import Parser
     parser = Parser(prog='colcon', description='colcon is an extensible command line tool '
@@ -152,13 +216,17 @@ def run_command(command):
     set_parse_streams(io)
     parser = _parser()
     argv = _protect_passthrough(argv)
+    if argv[:1] in (['-h'], ['--help']):
+        io.print(HELP, end='')
+        return CompletedCommand(['colcon', *argv], 0, out.getvalue(), err.getvalue(), None,
+                                chunks)
     try:
         args = parser.parse_args(argv)
     except ParserExit as e:
         return CompletedCommand(['colcon', *argv], e.status, out.getvalue(), err.getvalue(),
                                 None, chunks)
     if args.verb is None:
-        io.print(parser.format_usage(), end='')
+        io.print(USAGE, end='')
         io.eprint('Error: No verb provided')
         rc = 1
     else:
