@@ -33,13 +33,9 @@ class ImageViewer:
 
     # -- the subscriber process -----------------------------------------------------------
     def _main(self, args=None):
-        import labkit.rclpy as rclpy
-        from labkit.interfaces import get_type
         from labkit.vision.cv_bridge import CvBridge, CvBridgeError
 
         bridge = CvBridge()
-        rclpy.init(args=args)
-        node = rclpy.create_node(self.node_name)
 
         def on_image(msg):
             try:
@@ -51,13 +47,7 @@ class ImageViewer:
                 self.frames_received += 1
             self._push()
 
-        node.create_subscription(get_type('sensor_msgs/msg/Image'), self.topic, on_image, 10)
-        try:
-            rclpy.spin(node)
-        except KeyboardInterrupt:
-            pass
-        node.destroy_node()
-        rclpy.try_shutdown()
+        _spin_image_subscriber(args, self.node_name, self.topic, lambda node: on_image)
 
     # -- static face ----------------------------------------------------------------------
     def snapshot(self):
@@ -119,6 +109,23 @@ class ImageViewer:
             self._widget = None
 
 
+def _spin_image_subscriber(args, node_name, topic, make_callback):
+    """The body of a subscriber process: a node `node_name` on an Image `topic`, spun until
+    stopped. `make_callback(node)` returns the message callback (it may read the node's clock)."""
+    import labkit.rclpy as rclpy
+    from labkit.interfaces import get_type
+
+    rclpy.init(args=args)
+    node = rclpy.create_node(node_name)
+    node.create_subscription(get_type('sensor_msgs/msg/Image'), topic, make_callback(node), 10)
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
+    node.destroy_node()
+    rclpy.try_shutdown()
+
+
 def _grey_for_display(image, _error):
     """Scale any one-channel image to 0..255 grey, then to BGR (rqt_image_view does similar)."""
     if image.ndim == 3:
@@ -152,22 +159,12 @@ class FrameLog:
         self.process = process.start(name=node_name, main=self._main, args=[node_name], echo=False)
 
     def _main(self, args=None):
-        import labkit.rclpy as rclpy
-        from labkit.interfaces import get_type
+        def started(node):
+            clock = self._clock = node.get_clock()
+            self.start = clock.now().nanoseconds * 1e-9
+            return lambda _msg: self.times.append(clock.now().nanoseconds * 1e-9)
 
-        rclpy.init(args=args)
-        node = rclpy.create_node(self.node_name)
-        clock = self._clock = node.get_clock()
-        self.start = clock.now().nanoseconds * 1e-9
-        node.create_subscription(get_type('sensor_msgs/msg/Image'), self.topic,
-                                 lambda _msg: self.times.append(clock.now().nanoseconds * 1e-9),
-                                 10)
-        try:
-            rclpy.spin(node)
-        except KeyboardInterrupt:
-            pass
-        node.destroy_node()
-        rclpy.try_shutdown()
+        _spin_image_subscriber(args, self.node_name, self.topic, started)
 
     def elapsed(self):
         """Seconds of the node's clock since the log started."""
