@@ -93,13 +93,18 @@ def hz(args, io):
         else:
             clock = node.get_clock()
         meter = RateMeter(clock, args.window_size)
+        arrived = {}            # id(message) -> when it reached the subscription
 
         def callback(msg):
+            stamp = arrived.pop(id(msg), None)
             if filter_fn is None or filter_fn(msg):
-                meter.on_message(clock.now().nanoseconds)
+                # the time it arrived, as the middleware stamps a reception: a callback
+                # that runs late for several queued messages must not see them as a burst
+                meter.on_message(stamp if stamp is not None else clock.now().nanoseconds)
 
-        node.create_subscription(cls, args.topic_name, callback,
-                                 _sensor_qos())
+        sub = node.create_subscription(cls, args.topic_name, callback,
+                                       _sensor_qos())
+        _stamp_arrivals(sub, clock, arrived)
         try:
             while node.ok():
                 node.spin_once(timeout_sec=1.0)
@@ -110,6 +115,24 @@ def hz(args, io):
             if node.ok():
                 raise
 
+
+
+def _stamp_arrivals(sub, clock, arrived):
+    """Note the reception time of every message the subscription is handed."""
+    endpoint = getattr(sub, '_endpoint', None)
+    deliver = getattr(endpoint, 'sink', None)
+    if deliver is None:
+        return
+
+    def sink(msg):
+        if len(arrived) > 1000:         # messages the queue dropped (KEEP_LAST) never come
+            arrived.clear()
+        arrived[id(msg)] = clock.now().nanoseconds
+        deliver(msg)
+    from labkit.graph.registry import GRAPH
+    with GRAPH.lock:                    # publishers hold the sinks they matched: renew them
+        endpoint.sink = sink
+        GRAPH._rematch(endpoint.name)
 
 
 # --------------------------------------------------------------------------- bw
