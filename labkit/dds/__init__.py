@@ -2,7 +2,7 @@
 
     connect(domain_id=None, localhost_only=None)   join DDS (one participant per process)
     disconnect()                                    leave; the in-process graph stays
-    bridge()                                        the current Bridge, or None
+    current()                                       the Bridge of this process, or None
 
 A connected process mirrors its nodes, topics and services on Cyclone DDS exactly as
 a ROS 2 node does (see bridge.py), so real ROS 2 nodes (Humble or later, Fast DDS or
@@ -20,7 +20,7 @@ import threading
 
 from labkit.dds.config import ConfigError
 
-__all__ = ["connect", "disconnect", "bridge", "is_connected", "ConfigError", "ConnectError",
+__all__ = ["connect", "disconnect", "current", "is_connected", "ConfigError", "ConnectError",
            "auto_enabled", "settle_discovery"]
 
 _bridge = None
@@ -31,7 +31,8 @@ class ConnectError(RuntimeError):
     """Joining DDS failed; the message is one line for the user."""
 
 
-def bridge():
+def current():
+    """The Bridge of this process (None when not connected)."""
     return _bridge
 
 

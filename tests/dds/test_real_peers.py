@@ -446,3 +446,94 @@ def test_every_socket_labkit_opens_is_on_loopback(tmp_path, domain):
         else:
             assert c.laddr.ip.startswith("127.") or c.laddr.ip == "::1", c
     assert len(wildcard) <= 2 and set(wildcard) <= rtps_ports, wildcard
+
+
+TALKER = """
+from std_msgs.msg import String
+rclpy.init()
+node = rclpy.create_node('talker')
+pub = node.create_publisher(String, 'chatter', 10)
+count = [0]
+def tick():
+    pub.publish(String(data='Hello World: %d' % count[0]))
+    count[0] += 1
+node.create_timer(0.1, tick)
+print('talking', flush=True)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    print('bye', flush=True)
+"""
+
+LISTENER = """
+from std_msgs.msg import String
+rclpy.init()
+node = rclpy.create_node('listener')
+node.create_subscription(String, 'chatter', lambda m: print('I heard:', m.data, flush=True), 10)
+try:
+    rclpy.spin(node)
+except KeyboardInterrupt:
+    pass
+"""
+
+
+def test_two_terminals_talk_a_third_lists_both_and_ctrl_c_ends_cleanly(tmp_path, domain):
+    import signal
+    talker = labkit(tmp_path, "talker", TALKER, domain)
+    listener = labkit(tmp_path, "listener", LISTENER, domain)
+    try:
+        assert talker.stdout.readline().strip() == "talking"
+        heard = listener.stdout.readline()
+        assert heard.startswith("I heard: Hello World: "), heard
+        listed = labkit_ros2(domain, "node", "list")
+        echoed = labkit_ros2(domain, "topic", "echo", "/chatter", "--once")
+    finally:
+        for proc in (talker, listener):
+            proc.send_signal(signal.SIGINT)
+    t_out, t_err = finish(talker)
+    l_out, l_err = finish(listener)
+    assert listed.stdout == "/listener\n/talker\n", listed
+    assert echoed.stdout.startswith("data: 'Hello World: ") and echoed.stdout.endswith("---\n")
+    assert talker.returncode == 0 and listener.returncode == 0, t_err + l_err
+    assert t_out.endswith("bye\n") and "Traceback" not in t_err + l_err
+
+
+def test_bad_domain_id_stops_exec_with_one_line(tmp_path):
+    path = tmp_path / "noop.py"
+    path.write_text("print('never')\n")
+    env = _env(0, LABKIT_TIME="live", LABKIT_DDS="on", PYTHONPATH=str(REPO), ROS_DOMAIN_ID="x1")
+    done_ = subprocess.run([sys.executable, "-m", "labkit", "exec", str(path)], env=env,
+                           capture_output=True, text=True, timeout=30)
+    assert done_.returncode == 1 and done_.stdout == ""
+    assert done_.stderr == ("labkit: failed to get default domain id: "
+                            "ROS_DOMAIN_ID is not an integral number\n")
+
+
+def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
+    """In a notebook (live time) `%ros2 connect` joins, `%ros2 disconnect` leaves and
+    labkit.reset() leaves too; remote nodes vanish with the connection."""
+    talker = labkit(tmp_path, "talker", TALKER, domain)
+    code = textwrap.dedent(f"""
+        import labkit, time
+        print(labkit.ros2('connect {domain}').stdout, end='')
+        end = time.monotonic() + 10
+        while '/talker' not in labkit.ros2('node list').stdout and time.monotonic() < end:
+            time.sleep(0.1)
+        print(labkit.ros2('node list').stdout, end='')
+        print(labkit.ros2('disconnect').stdout, end='')
+        print(repr(labkit.ros2('node list').stdout))
+        labkit.connect({domain})
+        labkit.reset()
+        from labkit import dds
+        print('connected after reset', dds.is_connected())
+    """)
+    env = _env(domain, LABKIT_TIME="live", PYTHONPATH=str(REPO))
+    env.pop("LABKIT_DDS", None)
+    try:
+        nb = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                            text=True, timeout=40)
+    finally:
+        talker.terminate()
+        finish(talker)
+    assert nb.stdout == (f"joined DDS domain {domain} (this computer only)\n/talker\n"
+                         f"left DDS domain {domain}\n''\nconnected after reset False\n"), nb

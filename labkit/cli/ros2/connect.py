@@ -10,7 +10,7 @@ def connect_command(argv):
     if argv[0] == 'disconnect':
         if len(argv) > 1:
             return CompletedCommand(argv, 2, '', USAGE + '\n')
-        was = dds.bridge()
+        was = dds.current()
         dds.disconnect()
         text = (f'left DDS domain {was.domain_id}\n' if was is not None else 'not connected\n')
         return CompletedCommand(argv, 0, text, '')

@@ -1,0 +1,287 @@
+"""labkit over DDS against real rclpy (Jazzy, Fast DDS), same machine, loopback only.
+
+Prints, in one run:
+  - small std_msgs/String throughput: labkit -> real, real -> labkit, real -> real
+    (target: labkit's rows at least real -> real's);
+  - ping-pong round trip median: labkit <-> real echo, real <-> real (target <= 1.5x);
+  - a 640x480 bgr8 Image stream at 30 Hz, labkit -> real: frames lost (target 0);
+  - process start to first message across processes (labkit exec talker -> listener,
+    and real -> real; target < 2 s).
+
+Every program below is plain rclpy, run with `python -m labkit exec` (which joins DDS)
+or with the reference interpreter ($ROSREF_PYTHON, else .venv-rosref/bin/python).
+
+    python benchmarks/bench_dds.py
+"""
+import json
+import os
+import random
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+SECONDS = 3.0
+
+
+# ----------------------------------------------------------------- the programs
+def _spin(node, seconds):
+    import rclpy
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        rclpy.spin_once(node, timeout_sec=0.01)
+
+
+def _wait_matched(node, pub, timeout=10.0):
+    import rclpy
+    end = time.monotonic() + timeout
+    while pub.get_subscription_count() == 0 and time.monotonic() < end:
+        rclpy.spin_once(node, timeout_sec=0.05)
+    _spin(node, 0.5)            # the DDS reader matches a moment after discovery
+
+
+def sink():
+    """Count std_msgs/String on 'bench' until SECONDS after the first one."""
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_sink')
+    stamps = []
+    node.create_subscription(String, 'bench', lambda m: stamps.append(time.monotonic()), 10)
+    print('ready', flush=True)
+    end = time.monotonic() + 30
+    while time.monotonic() < end and (not stamps or time.monotonic() < stamps[0] + SECONDS):
+        rclpy.spin_once(node, timeout_sec=0.01)
+    span = (stamps[-1] - stamps[0]) if len(stamps) > 1 else 0
+    print(json.dumps({'received': len(stamps), 'per_s': (len(stamps) - 1) / span if span else 0}))
+
+
+def source():
+    """Publish std_msgs/String on 'bench' as fast as possible for SECONDS + 1."""
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_source')
+    pub = node.create_publisher(String, 'bench', 10)
+    _wait_matched(node, pub)
+    msg, sent = String(data='Hello World'), 0
+    end = time.monotonic() + SECONDS + 1
+    while time.monotonic() < end:
+        pub.publish(msg)
+        sent += 1
+        rclpy.spin_once(node, timeout_sec=0)
+    print(json.dumps({'sent': sent}))
+
+
+def echo():
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_echo')
+    pub = node.create_publisher(String, 'pong', 10)
+    last = [None]
+
+    def answer(msg):
+        pub.publish(msg)
+        last[0] = time.monotonic()
+    node.create_subscription(String, 'ping', answer, 10)
+    print('ready', flush=True)
+    end = time.monotonic() + 30       # until the pinger has been quiet for 2 s
+    while time.monotonic() < end and (last[0] is None or time.monotonic() < last[0] + 2):
+        rclpy.spin_once(node, timeout_sec=0.01)
+    print(json.dumps({}))
+
+
+def pinger():
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_pinger')
+    got = []
+    node.create_subscription(String, 'pong', got.append, 10)
+    pub = node.create_publisher(String, 'ping', 10)
+    _wait_matched(node, pub)
+    rtts = []
+    for i in range(300):
+        got.clear()
+        t0 = time.perf_counter()
+        pub.publish(String(data=str(i)))
+        end = time.monotonic() + 1.0
+        while not got and time.monotonic() < end:
+            rclpy.spin_once(node, timeout_sec=0.001)
+        if got:
+            rtts.append(time.perf_counter() - t0)
+    print(json.dumps({'median_ms': statistics.median(rtts) * 1e3 if rtts else None,
+                      'answered': len(rtts)}))
+
+
+def image_sink():
+    import rclpy
+    from sensor_msgs.msg import Image
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_image_sink')
+    got = []
+    node.create_subscription(Image, 'image', lambda m: got.append(m.header.frame_id), 10)
+    print('ready', flush=True)
+    end = time.monotonic() + 25
+    while time.monotonic() < end and len(set(got)) < 90:
+        rclpy.spin_once(node, timeout_sec=0.01)
+        if got and got[-1] == '89':
+            _spin(node, 0.5)
+            break
+    print(json.dumps({'received': len(set(got))}))
+
+
+def image_source():
+    import rclpy
+    from sensor_msgs.msg import Image
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_image_source')
+    pub = node.create_publisher(Image, 'image', 10)
+    _wait_matched(node, pub)
+    img = Image(height=480, width=640, encoding='bgr8', step=1920)
+    img.data = bytes(640 * 480 * 3)
+    start = time.monotonic()
+    for i in range(90):                  # 3 s at 30 Hz
+        img.header.frame_id = str(i)
+        pub.publish(img)
+        while time.monotonic() < start + (i + 1) / 30:
+            rclpy.spin_once(node, timeout_sec=0.005)
+    _spin(node, 1.0)
+    print(json.dumps({'sent': 90}))
+
+
+def first_listener():
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_first_listener')
+    got = []
+    node.create_subscription(String, 'first', lambda m: got.append(time.time()), 10)
+    print('ready', flush=True)
+    end = time.monotonic() + 20
+    while not got and time.monotonic() < end:
+        rclpy.spin_once(node, timeout_sec=0.01)
+    print(json.dumps({'first_at': got[0] if got else None}))
+
+
+def first_talker():
+    import rclpy
+    from std_msgs.msg import String
+    rclpy.init(args=[])
+    node = rclpy.create_node('bench_first_talker')
+    pub = node.create_publisher(String, 'first', 10)
+    end = time.monotonic() + 15
+    while time.monotonic() < end:     # like a talker: publish on a timer from the start
+        pub.publish(String(data='hi'))
+        _spin(node, 0.02)
+
+
+ROLES = {f.__name__: f for f in (sink, source, echo, pinger, image_sink, image_source,
+                                 first_listener, first_talker)}
+
+
+# ----------------------------------------------------------------- the front end
+def reference():
+    python = os.environ.get('ROSREF_PYTHON', str(REPO / '.venv-rosref' / 'bin' / 'python'))
+    return python if Path(python).exists() else None
+
+
+def start(side, role, domain):
+    env = dict(os.environ, PYTHONUNBUFFERED='1', ROS_DOMAIN_ID=str(domain),
+               ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST')
+    if side == 'labkit':
+        env.update(PYTHONPATH=str(REPO), LABKIT_TIME='live', LABKIT_DDS='on', ROS_DISTRO='jazzy')
+        argv = [sys.executable, '-m', 'labkit', 'exec', __file__, '--role', role]
+    else:
+        env['PYTHONPATH'] = ''
+        argv = [reference(), __file__, '--role', role]
+    return subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+
+
+def result(proc, timeout=60):
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, err = proc.communicate()
+    for line in reversed(out.splitlines()):
+        if line.startswith('{'):
+            return json.loads(line)
+    raise RuntimeError(f'{proc.args[-1]} failed:\n{err[-1500:]}')
+
+
+def pair(first_side, first_role, second_side, second_role):
+    """Start the waiting side, then the active one; both results."""
+    domain = random.randint(100, 230)
+    a = start(first_side, first_role, domain)
+    a.stdout.readline()          # 'ready'
+    b = start(second_side, second_role, domain)
+    return result(a), result(b)
+
+
+def image_rows():
+    print('640x480 bgr8 Image at 30 Hz for 3 s:')
+    for src, dst in (('labkit', 'real'), ('real', 'real'), ('real', 'labkit'),
+                     ('labkit', 'labkit')):
+        try:
+            got, _ = pair(dst, 'image_sink', src, 'image_source')
+        except RuntimeError as e:
+            print(f'  {src:>6} -> {dst:<6} failed: {str(e).splitlines()[0]}')
+            continue
+        print(f'  {src:>6} -> {dst:<6} {got["received"]}/90 frames, {90 - got["received"]} lost')
+
+
+def main():
+    if reference() is None:
+        print('real rclpy: reference venv not found (make rosref, or set ROSREF_PYTHON)')
+        return
+    only = sys.argv[sys.argv.index('--only') + 1] if '--only' in sys.argv else None
+    if only == 'image':
+        return image_rows()
+    print('small messages (std_msgs/String, reliable, keep last 10), received per second:')
+    rates = {}
+    for src, dst in (('labkit', 'real'), ('real', 'labkit'), ('real', 'real'),
+                     ('labkit', 'labkit')):
+        got, sent = pair(dst, 'sink', src, 'source')
+        rates[(src, dst)] = got['per_s']
+        print(f'  {src:>6} -> {dst:<6} {got["per_s"]:>9,.0f} msgs/s '
+              f'({got["received"]} received in {SECONDS:.0f} s, {sent["sent"]} published)')
+    base = rates[('real', 'real')]
+    for key in (('labkit', 'real'), ('real', 'labkit')):
+        print(f'  ratio {key[0]} -> {key[1]} / real -> real: {rates[key] / base:.2f} '
+              '(target >= 1)')
+    print('ping-pong round trip (std_msgs/String), median of 300:')
+    rtt = {}
+    for pinger_side, echo_side in (('labkit', 'real'), ('real', 'labkit'), ('real', 'real'),
+                                   ('labkit', 'labkit')):
+        _, ping = pair(echo_side, 'echo', pinger_side, 'pinger')
+        rtt[(pinger_side, echo_side)] = ping['median_ms']
+        print(f'  {pinger_side:>6} <-> {echo_side:<6} {ping["median_ms"]:.2f} ms '
+              f'({ping["answered"]}/300 answered)')
+    print(f'  ratio labkit <-> real / real <-> real: '
+          f'{rtt[("labkit", "real")] / rtt[("real", "real")]:.2f} (target <= 1.5)')
+    image_rows()
+    print('process start to first message delivered (listener already running):')
+
+    for talker, listener in (('labkit', 'labkit'), ('labkit', 'real'), ('real', 'real')):
+        domain = random.randint(100, 230)
+        lis = start(listener, 'first_listener', domain)
+        lis.stdout.readline()
+        t0 = time.time()
+        tal = start(talker, 'first_talker', domain)
+        first = result(lis)['first_at']
+        tal.kill()
+        tal.communicate()
+        text = f'{first - t0:.2f} s' if first else 'nothing within 20 s'
+        print(f'  {talker:>6} talker -> {listener:<6} listener: {text} (target < 2 s)')
+
+
+if __name__ == '__main__':
+    if '--role' in sys.argv:
+        ROLES[sys.argv[sys.argv.index('--role') + 1]]()
+    else:
+        main()
