@@ -390,3 +390,48 @@ def pytest_load_initial_conftests(early_config, parser, args):
 def pytest_configure(config):
     for marker in LINT_MARKERS:
         config.addinivalue_line('markers', f'{marker}: ament_lint test ({marker})')
+
+
+# ------------------------------------------------------------------ tests of the tests
+
+def test_variant(package_path, edits):
+    """Run a package's tests (`colcon test`) on a changed copy of it: a Result.
+
+    `edits` maps a file of the package (relative path) to (old, new) text
+    replacements; each `old` must occur in that file. The copy lives in a
+    scratch workspace that is removed afterwards, so the learner's workspace
+    (build/, log/) is untouched. A test suite that really tests the package
+    fails on a copy where the package was broken on purpose: that is how the
+    book checks that a learner's tests are worth their name.
+    """
+    import shutil
+    import tempfile
+
+    from labkit.ament import colcon, files
+    source = os.path.abspath(files.expand(package_path))
+    name = os.path.basename(source.rstrip(os.sep))
+    scratch = tempfile.mkdtemp(prefix='labkit-variant-')
+    here = os.getcwd()
+    try:
+        copy = os.path.join(scratch, 'src', name)
+        shutil.copytree(source, copy, symlinks=True,
+                        ignore=shutil.ignore_patterns('__pycache__', '.pytest_cache'))
+        for relative, replacements in edits.items():
+            path = os.path.join(copy, relative)
+            with open(path, encoding='utf-8') as f:
+                text = f.read()
+            for old, new in replacements:
+                if old not in text:
+                    raise ValueError(f'{relative}: {old!r} not found')
+                text = text.replace(old, new)
+            with open(path, 'w', encoding='utf-8') as f:
+                f.write(text)
+        os.chdir(scratch)
+        done = colcon.run_command(['test', '--packages-select', name])
+        junit = os.path.join(scratch, 'build', name, 'pytest.xml')
+        if not os.path.exists(junit):
+            raise RuntimeError(f'colcon test found no package {name}: {done.stderr.strip()}')
+        return parse_xunit(junit)
+    finally:
+        os.chdir(here)
+        shutil.rmtree(scratch, ignore_errors=True)
