@@ -2,12 +2,12 @@
 
     .venv/bin/python benchmarks/bench_robots.py
 
-- live time: robot_state_publisher for the r2d2 model fed JointState at 100 Hz
+- live time: robot_state_publisher for the facer model fed JointState at 100 Hz
   (`--ignore-timestamp`: no throttling by stamps, every message gives a /tf)
   by a publisher process for 5 s: CPU share of this whole Python process
   (both nodes plus the middleware), /tf messages received
 - the transform math alone: one JointState -> TFMessage (us)
-- the r2d2 animated snapshot: build time and iframe size
+- the driving facer animated snapshot: build time and iframe size
 """
 import os
 import resource
@@ -29,11 +29,11 @@ def bench_live(seconds=5.0, rate=100.0):
     import labkit.rclpy as rclpy
     from labkit import process
     from labkit.interfaces import get_type
-    from labkit.robots import r2d2
+    from labkit.robots import facer
     JointState = get_type("sensor_msgs/msg/JointState")
     TFMessage = get_type("tf2_msgs/msg/TFMessage")
-    with open(r2d2.urdf_path()) as handle:
-        r2d2.start_robot_state_publisher(
+    with open(facer.model_path()) as handle:
+        facer.start_robot_state_publisher(
             handle.read(), echo=False,
             extra_args=["--ros-args", "-p", "publish_frequency:=100.0",
                         "-p", "ignore_timestamp:=" + IGNORE])
@@ -42,15 +42,14 @@ def bench_live(seconds=5.0, rate=100.0):
         rclpy.init(args=args)
         node = rclpy.create_node("feeder")
         pub = node.create_publisher(JointState, "joint_states", 10)
-        motion = r2d2.R2D2Motion()
+        step = [0]
 
         def tick():
-            msg = JointState(name=["swivel", "tilt", "periscope"])
-            j = motion.joints()
-            msg.position = [j["swivel"], j["tilt"], j["periscope"]]
+            j = facer.joints_at(step[0] / rate)
+            msg = JointState(name=list(j), position=list(j.values()))
             msg.header.stamp = node.get_clock().now().to_msg()
             pub.publish(msg)
-            motion.step()
+            step[0] += 1
         node.create_timer(1.0 / rate, tick)
         rclpy.spin(node)
     process.start(main=joint_feeder, name="feeder", echo=False)
@@ -70,9 +69,9 @@ def bench_live(seconds=5.0, rate=100.0):
 
 def bench_math(n=2000):
     from labkit.interfaces import get_type
-    from labkit.robots import r2d2, robot_state_publisher as rsp
+    from labkit.robots import facer, robot_state_publisher as rsp
     from labkit.robots.urdf import load
-    model = load(r2d2.urdf_path())
+    model = load(facer.model_path())
     moving = model.movable_joints()
     Time = get_type("builtin_interfaces/msg/Time")
     [rsp.transform_stamped(j.parent, j.child, Time(), *j.transform(0.0)) for j in moving]
@@ -83,18 +82,18 @@ def bench_math(n=2000):
 
 
 def bench_snapshot():
-    from labkit.viz import meshcat_view
+    from labkit.robots import facer
     start = time.perf_counter()
-    view = meshcat_view.r2d2_walk(seconds=12.0, fps=10)
+    view = facer.drive_view(seconds=12.0, fps=10)
     frame = view.iframe()
     return time.perf_counter() - start, len(frame)
 
 
 if __name__ == "__main__":
     share, rate = bench_live()
-    print(f"robot_state_publisher r2d2 @100 Hz (live, 5 s): CPU {share * 100:.1f}% of one core "
+    print(f"robot_state_publisher facer @100 Hz (live, 5 s): CPU {share * 100:.1f}% of one core "
           f"(rsp + feeder + listener), /tf received {rate:.1f}/s")
-    print(f"JointState -> 3 TransformStamped: {bench_math():.1f} us")
+    print(f"JointState -> 4 TransformStamped: {bench_math():.1f} us")
     seconds, size = bench_snapshot()
-    print(f"r2d2 walking snapshot (12 s at 10 fps): built in {seconds:.2f} s, "
+    print(f"facer driving snapshot (12 s at 10 fps): built in {seconds:.2f} s, "
           f"iframe {size / 1e6:.2f} MB")

@@ -1,5 +1,5 @@
 """Robot models: URDF/xacro, robot_state_publisher, joint_state_publisher(_gui),
-the urdf_tutorial models and the walking r2d2 of the Humble URDF tutorial.
+the facer robot's description package (facer_description) and its motion.
 
 `register()` (called by labkit.plugins) adds the executables; nothing heavy is
 imported until a node or a model is used.
@@ -47,19 +47,19 @@ def share_directory(package):
     return packages.share_directory(package)
 
 
-def display(model="urdf/01-myfirst.urdf", gui=True, echo=True):
-    """What `ros2 launch urdf_tutorial display.launch.py model:=... gui:=...` starts:
+def display(model="urdf/01-one-shape.urdf", gui=True, echo=True):
+    """What `ros2 launch facer_description display.launch.py model:=... gui:=...` starts:
     robot_state_publisher (xacro-expanded model), joint_state_publisher(_gui) and
-    the viewer in place of rviz2. A relative `model` is taken inside urdf_tutorial's share.
+    the viewer in place of rviz2. A relative `model` is taken inside facer_description's share.
     Returns the processes; `labkit.viz.meshcat_view.current()` is the viewer."""
     import os
     from labkit import process
-    from labkit.robots import r2d2
+    from labkit.robots import facer
     model = str(model)
-    if not os.path.isabs(model) and not os.path.exists(model):
-        model = os.path.join(share_directory("urdf_tutorial"), model)
+    if not os.path.isabs(model):
+        model = os.path.join(share_directory("facer_description"), model)
     text = description(model)
     jsp = "joint_state_publisher_gui" if gui else "joint_state_publisher"
     return [process.start([jsp, jsp], echo=echo),
-            r2d2.start_robot_state_publisher(text, echo=echo),
+            facer.start_robot_state_publisher(text, echo=echo),
             process.start(["rviz2", "rviz2"], echo=echo)]

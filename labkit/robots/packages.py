@@ -1,14 +1,12 @@
 """Where robot packages live: a workspace the reader built and sourced first,
-then labkit's bundled `urdf_tutorial` (labkit/robots/prefix, a read-only
+then labkit's bundled `facer_description` (labkit/robots/prefix, a read-only
 install prefix), then whatever else the ament index knows."""
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PREFIX = os.path.join(HERE, "prefix")
 SHARE = os.path.join(PREFIX, "share")
-BUNDLED = ("urdf_tutorial",)
-# the tutorial's r2d2.urdf.xml (the reader downloads it into urdf_tutorial_r2d2)
-R2D2_URDF = os.path.join(HERE, "data", "r2d2.urdf.xml")
+BUNDLED = ("facer_description",)
 
 
 class PackageNotFoundError(KeyError):

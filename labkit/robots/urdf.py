@@ -229,3 +229,30 @@ def read_text(path):
 
 def is_path(value):
     return isinstance(value, (str, os.PathLike)) and not str(value).lstrip().startswith("<")
+
+
+def check_urdf(path):
+    """What urdfdom's `check_urdf FILE` prints: the robot's name and its link tree,
+    each link's children in the order of their joints' names (urdf::Model keeps joints
+    in a std::map). Returns (exit code, text); a file it cannot read or parse exits 255 (-1)."""
+    if not os.path.isfile(path):
+        return 255, f"Could not open file [{path}] for parsing."
+    try:
+        model = load(path)
+    except URDFError as exc:
+        return 255, f"Error:   {exc}\nERROR: Model Parsing the xml failed"
+    by_parent = {}
+    for name in sorted(model.joints):
+        joint = model.joints[name]
+        by_parent.setdefault(joint.parent, []).append(joint.child)
+    lines = [f"robot name is: {model.name}",
+             "---------- Successfully Parsed XML ---------------",
+             f"root Link: {model.root} has {len(by_parent.get(model.root, []))} child(ren)"]
+
+    def tree(link, level):
+        level += 2
+        for count, child in enumerate(by_parent.get(link, []), 1):
+            lines.append("  " * level + f"child({count}):  {child}")
+            tree(child, level)
+    tree(model.root, 0)
+    return 0, "\n".join(lines)

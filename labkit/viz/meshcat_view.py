@@ -6,7 +6,8 @@ Two faces:
 - static: `RobotView.iframe()` / `_repr_html_()` is a self-contained
   `<iframe srcdoc=...>` (meshcat's viewer script and the scene, gzip-compressed
   and base64-inlined, unpacked by the browser): no server, works in the HTML
-  book. `animate()` adds a meshcat animation (e.g. the walking r2d2).
+  book. `animate()` adds a meshcat animation (e.g. the driving facer,
+  labkit.robots.facer.drive_view()).
 - live: `RobotView.follow()` starts a hidden process whose node subscribes
   /tf and /tf_static (and /robot_description) and moves the scene. In JupyterLab
   `show()` displays a widget (labkit/viz/meshcat_widget.py) that gets the scene
@@ -494,27 +495,6 @@ def robot_view(source, positions=None, **kwargs):
     view = RobotView(source, **kwargs)
     if positions:
         view.set_joint_positions(positions)
-    return view
-
-
-def r2d2_walk(seconds=12.0, fps=10):
-    """The walking r2d2 (odom -> axis + swivel/tilt/periscope) as an animated snapshot."""
-    from labkit.robots import r2d2
-    from labkit.robots.urdf import pose_matrix
-    view = RobotView(r2d2.urdf_path(), frame_scale=0.2)
-    view.reach = 2.6              # the 2 m circle it walks
-    motion = r2d2.R2D2Motion()
-    frames = []
-    steps_per_key = max(1, int(round(30 / fps)))
-    for k in range(int(seconds * 30)):
-        if k % steps_per_key == 0:
-            xyz, yaw = motion.odom()
-            base = pose_matrix(xyz, (0, 0, yaw))
-            poses = {n: base @ m for n, m in view.model.link_poses(motion.joints()).items()}
-            poses["odom"] = np.eye(4)
-            frames.append(poses)
-        motion.step()
-    view.animate(frames, fps=fps)
     return view
 
 

@@ -8,13 +8,13 @@ import labkit.rclpy as rclpy
 from labkit import process, robots
 from labkit.interfaces import get_type
 from labkit.rclpy.qos import DurabilityPolicy, QoSProfile
-from labkit.robots import r2d2
+from labkit.robots import facer
 
 TFMessage = get_type("tf2_msgs/msg/TFMessage")
 JointState = get_type("sensor_msgs/msg/JointState")
 String = get_type("std_msgs/msg/String")
 LATCHED = QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)
-FLEXIBLE = os.path.join(robots.share_directory("urdf_tutorial"), "urdf", "06-flexible.urdf")
+PAN = os.path.join(robots.share_directory("facer_description"), "urdf", "06-pan-joint.urdf")
 
 
 class Listener:
@@ -49,57 +49,58 @@ def test_executables_are_registered():
 
 
 def test_rsp_static_dynamic_and_description():
-    with open(r2d2.urdf_path()) as handle:
+    with open(facer.model_path()) as handle:
         description = handle.read()
-    rsp = r2d2.start_robot_state_publisher(description, echo=False)
+    rsp = facer.start_robot_state_publisher(description, echo=False)
     tester = Listener()
     tester.spin_for(0.1)
     assert [line.split("]: ")[1] for line in rsp.output] == [
-        "got segment " + n for n in ["axis", "body", "box", "head", "leg1", "leg2", "rod"]]
+        "got segment " + n for n in ["base_link", "camera_link", "caster_link", "head_link",
+                                     "left_wheel", "mast_link", "right_wheel"]]
     static = by_child(tester.tf_static)
     assert sorted((t.header.frame_id, c) for c, t in static.items()) == [
-        ("axis", "leg1"), ("axis", "leg2"), ("rod", "box")]
-    assert static["leg2"].transform.translation.y == pytest.approx(-0.3)
+        ("base_link", "caster_link"), ("head_link", "camera_link")]
+    assert static["caster_link"].transform.translation.z == pytest.approx(-0.025)
     assert tester.descriptions[-1].data == description
     assert tester.tf == []                         # nothing moves before a JointState
 
     pub = tester.node.create_publisher(JointState, "joint_states", 10)
-    msg = JointState(name=["swivel", "tilt", "periscope", "unknown"],
-                     position=[math.pi / 2, -0.25, -0.1, 1.0])
+    msg = JointState(name=["head_pan", "mast_lift", "left_wheel_joint", "right_wheel_joint",
+                           "unknown"], position=[math.pi / 2, 0.05, -0.25, 0.0, 1.0])
     msg.header.stamp = tester.node.get_clock().now().to_msg()
     pub.publish(msg)
     tester.spin_for(0.1)
     moving = by_child(tester.tf)
-    assert sorted(moving) == ["body", "head", "rod"]
-    head = moving["head"]
-    assert head.header.frame_id == "body"
+    assert sorted(moving) == ["head_link", "left_wheel", "mast_link", "right_wheel"]
+    head = moving["head_link"]
+    assert head.header.frame_id == "mast_link"
     assert head.header.stamp == msg.header.stamp
     assert (head.transform.rotation.z, head.transform.rotation.w) == pytest.approx(
         (math.sin(math.pi / 4), math.cos(math.pi / 4)))
-    assert moving["rod"].transform.translation.z == pytest.approx(0.15 - 0.1)
-    assert moving["body"].transform.rotation.y == pytest.approx(math.sin(-0.125))
+    assert moving["mast_link"].transform.translation.z == pytest.approx(0.07 + 0.05)
+    assert moving["left_wheel"].transform.rotation.y == pytest.approx(math.sin(-0.125))
 
 
 def test_rsp_throttles_by_publish_frequency_and_checks_lengths():
-    with open(r2d2.urdf_path()) as handle:
-        rsp = r2d2.start_robot_state_publisher(handle.read(), echo=False)
+    with open(facer.model_path()) as handle:
+        rsp = facer.start_robot_state_publisher(handle.read(), echo=False)
     tester = Listener()
     pub = tester.node.create_publisher(JointState, "joint_states", 10)
     stamp = tester.node.get_clock().now().to_msg()
     for _ in range(3):                          # same stamp: within 1/20 s -> one publish
-        msg = JointState(name=["swivel"], position=[0.5])
+        msg = JointState(name=["head_pan"], position=[0.5])
         msg.header.stamp = stamp
         pub.publish(msg)
         tester.spin_for(0.01)
     assert len(tester.tf) == 1
-    pub.publish(JointState(name=["swivel", "tilt"], position=[0.5]))
+    pub.publish(JointState(name=["head_pan", "mast_lift"], position=[0.5]))
     tester.spin_for(0.01)
-    pub.publish(JointState(name=["swivel"]))
+    pub.publish(JointState(name=["head_pan"]))
     tester.spin_for(0.01)
     assert len(tester.tf) == 1
     text = "\n".join(rsp.output)
     assert "Robot state publisher ignored an invalid JointState message" in text
-    assert 'ignored a JointState message about joint(s) "swivel"(,...) whose position' in text
+    assert 'ignored a JointState message about joint(s) "head_pan"(,...) whose position' in text
 
 
 def test_rsp_without_description_is_fatal():
@@ -127,24 +128,17 @@ def labkit_sleep(seconds):
 
 def test_rsp_file_argument_and_jsp_pipeline():
     """joint_state_publisher reads /robot_description and drives robot_state_publisher."""
-    process.start(["robot_state_publisher", "robot_state_publisher", FLEXIBLE], echo=False)
+    process.start(["robot_state_publisher", "robot_state_publisher", PAN], echo=False)
     jsp = process.start(["joint_state_publisher", "joint_state_publisher"], echo=False)
     tester = Listener()
     tester.spin_for(0.35)
     assert "Waiting for robot_description" in jsp.output[0]
     assert len(tester.joint_states) in (3, 4)              # 10 Hz
     js = tester.joint_states[-1]
-    assert list(js.name) == ["right_front_wheel_joint", "right_back_wheel_joint",
-                             "left_front_wheel_joint", "left_back_wheel_joint",
-                             "gripper_extension", "left_gripper_joint", "right_gripper_joint",
-                             "head_swivel"]
-    # zero, or the middle of the limits when 0 is outside them (gripper_extension: -0.38..0)
-    assert list(js.position) == [0.0] * 8
-    assert sorted(by_child(tester.tf)) == ["gripper_pole", "head", "left_front_wheel",
-                                           "left_back_wheel", "left_gripper",
-                                           "right_back_wheel", "right_front_wheel",
-                                           "right_gripper"] or len(by_child(tester.tf)) == 8
-    assert len(by_child(tester.tf_static)) == 7
+    assert list(js.name) == ["left_wheel_joint", "right_wheel_joint", "mast_lift", "head_pan"]
+    assert list(js.position) == [0.0] * 4      # zero lies inside every range (mast: 0..0.08)
+    assert sorted(by_child(tester.tf)) == ["head_link", "left_wheel", "mast_link", "right_wheel"]
+    assert sorted(by_child(tester.tf_static)) == ["camera_link", "caster_link"]
 
 
 def test_jsp_centres_limits_and_zeros_parameter(tmp_path):
@@ -167,37 +161,23 @@ def test_jsp_centres_limits_and_zeros_parameter(tmp_path):
 def test_gui_sliders_move_the_joints():
     pytest.importorskip("ipywidgets")
     from labkit.robots import sliders
-    process.start(["robot_state_publisher", "robot_state_publisher", FLEXIBLE], echo=False)
+    process.start(["robot_state_publisher", "robot_state_publisher", PAN], echo=False)
     process.start(["joint_state_publisher_gui", "joint_state_publisher_gui"], echo=False)
     tester = Listener()
     tester.spin_for(0.15)
     panel = sliders.panel()
     assert sorted(panel.sliders) == sorted(tester.joint_states[-1].name)
-    panel.sliders["head_swivel"].value = 1.0
+    panel.sliders["head_pan"].value = 1.0
     tester.spin_for(0.15)
     js = tester.joint_states[-1]
-    assert dict(zip(js.name, js.position))["head_swivel"] == pytest.approx(1.0)
-    head = by_child(tester.tf)["head"]
+    assert dict(zip(js.name, js.position))["head_pan"] == pytest.approx(1.0)
+    head = by_child(tester.tf)["head_link"]
     assert head.transform.rotation.z == pytest.approx(math.sin(0.5))
 
 
-def test_r2d2_demo_walks():
-    rsp, walker = r2d2.start_demo(echo=False)
-    tester = Listener()
-    tester.spin_for(1.0)
-    assert walker.output == ["[INFO] [1704067200.000000000] [state_publisher]: "
-                             "state_publisher started"]
-    odom = [t for m in tester.tf for t in m.transforms if t.child_frame_id == "axis"]
-    assert 25 <= len(odom) <= 31                               # 30 Hz
-    last = odom[-1].transform.translation
-    assert math.hypot(last.x, last.y) == pytest.approx(2.0)
-    assert last.z == pytest.approx(0.7)
-    assert {"body", "head", "rod"} <= set(by_child(tester.tf))
-
-
 def test_rsp_parameters_and_new_description():
-    with open(r2d2.urdf_path()) as handle:
-        r2d2.start_robot_state_publisher(handle.read(), echo=False)
+    with open(facer.model_path("01-one-shape.urdf")) as handle:
+        facer.start_robot_state_publisher(handle.read(), echo=False)
     import labkit
     names = labkit.ros2("param list /robot_state_publisher").stdout.split()
     assert {"frame_prefix", "ignore_timestamp", "publish_frequency", "robot_description",
@@ -209,7 +189,7 @@ def test_rsp_parameters_and_new_description():
     tester.spin_for(0.05)
     tester.tf_static.clear()
     from labkit.robots.urdf import load
-    flexible = open(FLEXIBLE).read()
+    flexible = open(PAN).read()
     SetParameters = get_type("rcl_interfaces/srv/SetParameters")
     Parameter = get_type("rcl_interfaces/msg/Parameter")
     ParameterValue = get_type("rcl_interfaces/msg/ParameterValue")
@@ -225,16 +205,17 @@ def test_rsp_parameters_and_new_description():
 
 
 def test_jsp_source_list_and_zeros_parameters():
-    process.start(["robot_state_publisher", "robot_state_publisher", r2d2.urdf_path()],
-                  echo=False)
+    process.start(["robot_state_publisher", "robot_state_publisher", PAN], echo=False)
     process.start(["joint_state_publisher", "joint_state_publisher", "--ros-args",
-                   "-p", "source_list:=[walker]", "-p", "zeros.swivel:=0.5"], echo=False)
+                   "-p", "source_list:=[walker]", "-p", "zeros.head_pan:=0.5"], echo=False)
     tester = Listener()
     tester.spin_for(0.15)
     first = dict(zip(tester.joint_states[-1].name, tester.joint_states[-1].position))
-    assert first == {"tilt": 0.0, "swivel": 0.5, "periscope": 0.0}
+    assert first == {"left_wheel_joint": 0.0, "right_wheel_joint": 0.0, "mast_lift": 0.0,
+                     "head_pan": 0.5}
     pub = tester.node.create_publisher(JointState, "walker", 10)
-    pub.publish(JointState(name=["tilt", "nothing"], position=[-0.3, 9.0]))
+    pub.publish(JointState(name=["mast_lift", "nothing"], position=[0.03, 9.0]))
     tester.spin_for(0.15)
     last = dict(zip(tester.joint_states[-1].name, tester.joint_states[-1].position))
-    assert last == {"tilt": -0.3, "swivel": 0.5, "periscope": 0.0}
+    assert last == {"left_wheel_joint": 0.0, "right_wheel_joint": 0.0, "mast_lift": 0.03,
+                    "head_pan": 0.5}

@@ -3,24 +3,53 @@ import io
 import os
 import contextlib
 
+import numpy as np
 import pytest
 
 from labkit import robots
 from labkit.robots import xacro_support
 from labkit.robots.urdf import URDFError
 
-SHARE = robots.share_directory("urdf_tutorial")
+SHARE = robots.share_directory("facer_description")
 
 
-def test_macroed_expands_like_physics():
-    text = robots.description(os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro"))
+def test_macros_expand_to_the_hand_written_physics_model():
+    """08-macros.urdf.xacro is 07-physics.urdf written with xacro: same links, joints,
+    shapes, origins, limits, masses and inertias (numbers to 1e-9)."""
+    text = robots.description(os.path.join(SHARE, "urdf", "08-macros.urdf.xacro"))
     assert "xacro:" not in text and "${" not in text
-    macroed = robots.load(text)
+    macros = robots.load(text)
     physics = robots.load(os.path.join(SHARE, "urdf", "07-physics.urdf"))
-    assert sorted(macroed.links) == sorted(physics.links)
-    assert sorted(macroed.joints) == sorted(physics.joints)
-    # the macro puts the right leg at -y like the plain URDFs: 0.22 = width + .02
-    assert macroed.joints["base_to_right_leg"].origin[1, 3] == pytest.approx(-0.22)
+    assert sorted(macros.links) == sorted(physics.links)
+    assert sorted(macros.joints) == sorted(physics.joints)
+    for name, joint in physics.joints.items():
+        other = macros.joints[name]
+        assert (other.type, other.parent, other.child) == (joint.type, joint.parent, joint.child)
+        np.testing.assert_allclose(other.origin, joint.origin, atol=1e-4, err_msg=name)
+        np.testing.assert_allclose(other.axis, joint.axis, err_msg=name)
+        if joint.limit is not None:
+            assert (other.limit.lower, other.limit.upper) == \
+                pytest.approx((joint.limit.lower, joint.limit.upper), abs=1e-4)
+    for name, link in physics.links.items():
+        other = macros.links[name]
+        a, b = link.inertial, other.inertial
+        assert b.mass == pytest.approx(a.mass)
+        for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
+            assert getattr(b.inertia, key) == pytest.approx(getattr(a.inertia, key), rel=1e-4,
+                                                            abs=1e-12), (name, key)
+        for mine, theirs in ((link.visuals, other.visuals), (link.collisions, other.collisions)):
+            assert [type(v.geometry).__name__ for v in mine] == \
+                [type(v.geometry).__name__ for v in theirs], name
+            for v, w in zip(mine, theirs):
+                np.testing.assert_allclose(_origin(w), _origin(v), atol=1e-4, err_msg=name)
+        assert [physics.material_rgba(v) for v in link.visuals] == \
+            [macros.material_rgba(v) for v in other.visuals], name
+
+
+def _origin(element):
+    from labkit.robots.urdf import pose_matrix
+    o = element.origin
+    return pose_matrix(o.xyz if o and o.xyz else (0, 0, 0), o.rpy if o and o.rpy else (0, 0, 0))
 
 
 def test_find_resolves_through_package_index(tmp_path):
@@ -32,12 +61,12 @@ def test_find_resolves_through_package_index(tmp_path):
         '<link name="${prefix}_leg"><visual><geometry><box size="${width*3} 0.1 0.2"/>'
         '</geometry></visual></link></xacro:macro>'
         '<link name="base"><visual><geometry>'
-        '<mesh filename="$(find urdf_tutorial)/meshes/l_finger.dae"/></geometry></visual></link>'
+        '<mesh filename="$(find facer_description)/meshes/wheel.dae"/></geometry></visual></link>'
         '<xacro:leg prefix="right" reflect="1"/>'
         '<joint name="base_to_right_leg" type="fixed"><parent link="base"/>'
         '<child link="right_leg"/></joint></robot>')
     text = xacro_support.process(str(path))
-    assert os.path.join(SHARE, "meshes", "l_finger.dae") in text
+    assert os.path.join(SHARE, "meshes", "wheel.dae") in text
     m = robots.load(text)
     assert m.links["right_leg"].visuals[0].geometry.size == pytest.approx([0.6, 0.1, 0.2])
 
@@ -64,18 +93,18 @@ def test_xacro_error_names_file(tmp_path):
 def test_xacro_command_prints_urdf(tmp_path):
     out = io.StringIO()
     with contextlib.redirect_stdout(out):
-        code = xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro")])
+        code = xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macros.urdf.xacro")])
     assert code == 0
-    assert '<robot name="macroed">' in out.getvalue()
+    assert '<robot name="facer">' in out.getvalue()
     target = tmp_path / "model.urdf"
-    assert xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macroed.urdf.xacro"),
+    assert xacro_support.main(["xacro", os.path.join(SHARE, "urdf", "08-macros.urdf.xacro"),
                                "-o", str(target)]) == 0
-    assert robots.load(str(target)).name == "macroed"
+    assert robots.load(str(target)).name == "facer"
 
 
 def test_run_for_launch_command_substitution():
-    code, out, err = xacro_support.run("xacro " + os.path.join(SHARE, "urdf", "01-myfirst.urdf"))
+    code, out, err = xacro_support.run("xacro " + os.path.join(SHARE, "urdf", "01-one-shape.urdf"))
     assert (code, err) == (0, "")
-    assert robots.load(out).name == "myfirst"
+    assert robots.load(out).name == "facer"
     code, out, err = xacro_support.run("xacro /nonexistent.xacro")
     assert code == 2 and out == "" and "No such file or directory: /nonexistent.xacro" in err

@@ -13,11 +13,13 @@ import pytest
 import umsgpack
 
 import labkit
-from labkit import robots
+from labkit import plugins, robots
 from labkit.viz import meshcat_view
 
-SHARE = robots.share_directory("urdf_tutorial")
-URDF = os.path.join(SHARE, "urdf", "01-myfirst.urdf")
+plugins.register_all()          # the robots room's bundled packages (urdf_tutorial)
+
+SHARE = robots.share_directory("facer_description")
+URDF = os.path.join(SHARE, "urdf", "01-one-shape.urdf")
 
 
 @pytest.fixture(autouse=True)
