@@ -9,7 +9,7 @@ The picture is 720 px wide (the book's column) with labels of 13-14 px.
 from html import escape
 
 WIDTH, HEIGHT = 720, 300
-LEFT, RIGHT, TOP, BOTTOM = 60, 16, 44, 48
+LEFT, RIGHT, TOP, BOTTOM = 60, 16, 34, 48
 FONT = 'Noto Sans CJK SC, Microsoft YaHei, PingFang SC, DejaVu Sans, sans-serif'
 BANDS = ('#eef3fa', '#fbf3e6')
 
@@ -18,7 +18,7 @@ def frame_rate_svg(rates, phases, *, title='每秒收到的帧数', y_label='帧
                    x_label='时间（秒）', band_title='timer_period ='):
     seconds = len(rates)
     top_value = max([n for _, n in rates] + [1])
-    y_max = max(5, ((top_value + 4) // 5) * 5)
+    y_max = (top_value // 5 + 1) * 5      # headroom: the phase labels sit above the bars
     plot_w, plot_h = WIDTH - LEFT - RIGHT, HEIGHT - TOP - BOTTOM
     step = plot_w / max(seconds, 1)
 
@@ -33,7 +33,7 @@ def frame_rate_svg(rates, phases, *, title='每秒收到的帧数', y_label='帧
     for k, ((start, label), end) in enumerate(zip(phases, ends)):
         parts.append(f'<rect x="{x(start):.1f}" y="{TOP}" width="{x(end) - x(start):.1f}" '
                      f'height="{plot_h}" fill="{BANDS[k % 2]}"/>')
-        parts.append(f'<text x="{(x(start) + x(end)) / 2:.1f}" y="{TOP - 8}" text-anchor="middle" '
+        parts.append(f'<text x="{(x(start) + x(end)) / 2:.1f}" y="{TOP + 20}" text-anchor="middle" '
                      f'font-size="13" fill="#333">{escape(band_title)} {escape(label)}</text>')
     for v in range(0, y_max + 1, 5):
         parts.append(f'<line x1="{LEFT}" y1="{y(v):.1f}" x2="{WIDTH - RIGHT}" y2="{y(v):.1f}" '
@@ -55,7 +55,7 @@ def frame_rate_svg(rates, phases, *, title='每秒收到的帧数', y_label='帧
                  f'font-size="14" fill="#333">{escape(x_label)}</text>')
     parts.append(f'<text x="16" y="{TOP + plot_h / 2:.1f}" text-anchor="middle" font-size="14" '
                  f'fill="#333" transform="rotate(-90 16 {TOP + plot_h / 2:.1f})">{escape(y_label)}</text>')
-    parts.append(f'<text x="{LEFT}" y="18" font-size="14" font-weight="bold" '
+    parts.append(f'<text x="{LEFT}" y="20" font-size="14" font-weight="bold" '
                  f'fill="#333">{escape(title)}</text>')
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{HEIGHT}" '
             f'viewBox="0 0 {WIDTH} {HEIGHT}" font-family="{FONT}">' + ''.join(parts) + '</svg>')
