@@ -76,3 +76,30 @@ def test_option_prefixes_and_errors_are_optparse():
     r = rosdep.run_command('')
     assert r.returncode == 2 and r.stderr.endswith('rosdep: error: Please enter a command\n')
     assert rosdep.run_command('--version').stdout == '0.25.1\n'
+
+
+def test_dependency_types_select_tags(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    pkg = tmp_path / 'src' / 'demo'
+    pkg.mkdir(parents=True)
+    (pkg / 'package.xml').write_text(
+        '<?xml version="1.0"?>\n<package format="3"><name>demo</name><version>0.0.0</version>'
+        '<description>d</description><maintainer email="dev@example.com">dev</maintainer>'
+        '<license>MIT</license><buildtool_depend>ament_cmake</buildtool_depend>'
+        '<depend>rclpy</depend><exec_depend>python3-opencv</exec_depend>'
+        '<test_depend>python3-pytest</test_depend><doc_depend>doxygen</doc_depend>'
+        '<export><build_type>ament_cmake</build_type></export></package>\n')
+
+    def keys(extra=''):
+        r = rosdep.run_command('keys --from-paths src ' + extra)
+        assert r.returncode == 0, r.stderr
+        return r.stdout.split()
+    # default: everything but doc
+    assert keys() == ['ament_cmake', 'rclpy', 'python3-opencv', 'python3-pytest']
+    assert keys('-t exec') == ['rclpy', 'python3-opencv']          # <depend> includes exec
+    assert keys('-t build') == ['rclpy']
+    assert keys('-t test') == ['python3-pytest']
+    assert keys('-t doc') == ['doxygen']
+    assert keys('-t exec -t test') == ['rclpy', 'python3-opencv', 'python3-pytest']
+    r = rosdep.run_command('keys --from-paths src -t runtime')
+    assert r.returncode == 2 and "option -t: invalid choice: 'runtime'" in r.stderr

@@ -17,8 +17,6 @@ import yaml
 HERE = os.path.dirname(os.path.abspath(__file__))
 DISTRO = 'humble'
 OS_KEY = 'ubuntu'
-KEY_TAGS = ('buildtool_depend', 'buildtool_export_depend', 'build_depend',
-            'build_export_depend', 'exec_depend', 'depend', 'test_depend', 'doc_depend')
 VERSION = '0.25.1'
 SUCCESS = '#All required rosdeps installed successfully'
 UNRESOLVED = ('ERROR: the following packages/stacks could not have their rosdep keys resolved\n'
@@ -56,18 +54,33 @@ def resolve(key):
     return None
 
 
-def package_keys(paths):
-    """[(package name, [keys in manifest order])] for every package.xml below `paths`."""
+# which dependency types each package.xml tag stands for (catkin_pkg's format 3 reading:
+# <depend> is build + build_export + exec)
+TAG_TYPES = {
+    'buildtool_depend': ('buildtool',), 'buildtool_export_depend': ('buildtool_export',),
+    'build_depend': ('build',), 'build_export_depend': ('build_export',),
+    'exec_depend': ('exec',), 'depend': ('build', 'build_export', 'exec'),
+    'test_depend': ('test',), 'doc_depend': ('doc',),
+}
+DEFAULT_TYPES = ('build', 'buildtool', 'build_export', 'buildtool_export', 'exec', 'test')
+
+
+def package_keys(paths, types=None):
+    """[(package name, [keys in manifest order])] for every package.xml below `paths`.
+
+    `types` (rosdep's -t): the dependency types to include; all but doc by default."""
     from labkit.ament import files, workspace
     import xml.etree.ElementTree as ET
+    wanted = set(types or DEFAULT_TYPES)
     found = []
     for path in paths:
         for pkg in workspace.discover([files.expand(path)]):
             root = ET.parse(os.path.join(pkg.path, 'package.xml')).getroot()
             keys = []
             for el in root:
-                if el.tag in KEY_TAGS and (el.text or '').strip() not in keys:
-                    keys.append((el.text or '').strip())
+                key = (el.text or '').strip()
+                if wanted.intersection(TAG_TYPES.get(el.tag, ())) and key not in keys:
+                    keys.append(key)
             found.append((pkg.name, keys))
     return found
 
@@ -278,7 +291,7 @@ def _collect(args, io):
                 return None
     else:
         paths = args.names
-    pkgs = package_keys(paths)
+    pkgs = package_keys(paths, args.dependency_types)
     local = {name for name, _ in pkgs}
     resolved, unresolved = [], []
     for name, keys in pkgs:
@@ -340,7 +353,7 @@ def check(args, io):
 
 
 def keys_verb(args, io):
-    pkgs = package_keys(args.names if args.from_paths else [])
+    pkgs = package_keys(args.names if args.from_paths else [], args.dependency_types)
     local = {n for n, _ in pkgs}
     for name, keys in pkgs:
         for key in keys:
