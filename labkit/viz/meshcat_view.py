@@ -263,8 +263,20 @@ class RobotView:
             return
         self._objects[path + "/triad"] = self._set_object(path + "/triad",
                                                           _triad(self.frame_scale))
-        self._objects[path + "/label"] = self._set_object(
-            path + "/label", _label(name, self.frame_scale * 2.0))
+        if not getattr(self, "_no_labels", False):
+            self._objects[path + "/label"] = self._set_object(
+                path + "/label", _label(name, self.frame_scale * 2.0))
+
+    def hide_labels(self):
+        """Frames keep their axes but lose their names (RViz's TF "Show Names" off):
+        a small robot's names pile up on each other. Returns the view."""
+        with self._lock:
+            self._no_labels = True
+            gone = [p for p in self._objects if p.startswith(FRAMES) and p.endswith("/label")]
+            for p in gone:
+                del self._objects[p]
+        self._push([{"type": "delete", "path": p} for p in gone])
+        return self
 
     @staticmethod
     def _set_object(path, obj):

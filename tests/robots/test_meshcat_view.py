@@ -198,3 +198,15 @@ def test_quaternions_match_scipy():
         ref = r.as_quat()
         ref = ref if ref[3] >= 0 else -ref
         np.testing.assert_allclose(q, ref, atol=1e-9)
+
+
+def test_hide_labels_keeps_the_axes_and_drops_the_names():
+    view = meshcat_view.RobotView(os.path.join(SHARE, "urdf", "06-pan-joint.urdf"))
+    assert any(p.endswith("/label") for p in objects(view.commands()))
+    assert view.hide_labels() is view
+    paths = objects(view.commands())
+    assert not any(p.endswith("/label") for p in paths)
+    assert sum(p.endswith("/triad") for p in paths) == 7
+    view.set_frame_poses({"odom": np.eye(4)})          # a frame seen later gets no name either
+    paths = objects(view.commands())
+    assert "/meshcat/frames/odom/triad" in paths and "/meshcat/frames/odom/label" not in paths
