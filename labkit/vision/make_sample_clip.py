@@ -8,11 +8,12 @@ rocket() and chelsea() have none.
 
 facer_crowd.avi, the scene for tuning the detector (chapter 15): four pictures
 in one 640x480 frame, 8 frames at 2 fps, sliding a little: Eileen Collins
-(astronaut()), Grace Hopper (the U.S. Navy portrait matplotlib ships as
-sample_data/grace_hopper.jpg), the cameraman of camera() whose face is turned
-away behind his camera, and a patch of cell() that the frontal-face cascade
-takes for a face at the default minNeighbors=5 (a hard negative: about 10
-neighbours, where the two real faces have 30 or more).
+(astronaut(), NASA, public domain), Grace Hopper (the U.S. Navy portrait,
+public domain, that matplotlib ships as sample_data/grace_hopper.jpg), the
+cameraman of camera() (CC0) whose face is turned away behind his camera, and a
+patch of cell() (CC0) that the frontal-face cascade takes for a face at the
+default minNeighbors=5 (a hard negative: about 10 neighbours, where the two
+real faces have 30 or more).
 
 Each frame is checked with the same Haar cascade the facer robot uses.
 
