@@ -196,6 +196,8 @@ def _parser():
             p.add_argument('--topological-order', '-t', action='store_true')
             p.add_argument('--names-only', '-n', action='store_true')
             p.add_argument('--paths-only', '-p', action='store_true')
+    # set after the verbs: argparse derives the verbs' prog from the usage at that time
+    parser.usage = USAGE[len('usage: '):].rstrip('\n')
     return parser
 
 

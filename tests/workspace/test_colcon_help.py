@@ -24,3 +24,11 @@ def test_no_verb_prints_the_same_usage_and_an_error():
     assert r.returncode == 1
     assert r.stdout == colcon.USAGE and r.stderr.strip() == 'Error: No verb provided'
     assert colcon.HELP.startswith(r.stdout)
+
+
+def test_an_unknown_argument_prints_the_real_usage():
+    r = colcon.run_command('test --cmake-args tests')
+    assert r.returncode == 2
+    assert r.stderr == colcon.USAGE + 'colcon: error: unrecognized arguments: --cmake-args tests\n'
+    # the verbs keep their own usage line
+    assert colcon.run_command('build --help').stdout.startswith('usage: colcon build [-h]')
