@@ -227,8 +227,19 @@ threading.Thread.start = _thread_start
 _real_sleep = time.sleep
 
 
+# Sleeps of the machinery around the notebook (ipykernel pauses 0.5 ms after
+# every cell) are real pauses: they must not move the ROS clock, or stored
+# timestamps would depend on the kernel's version.
+_HOST_MODULES = ("ipykernel", "zmq", "tornado", "jupyter_client", "asyncio", "traitlets")
+
+
+def _called_by_host() -> bool:
+    caller = sys._getframe(2).f_globals.get("__name__", "")
+    return caller.split(".", 1)[0] in _HOST_MODULES
+
+
 def _process_sleep(seconds):
-    if world.mode() != "virtual":
+    if world.mode() != "virtual" or _called_by_host():
         return _real_sleep(seconds)
     proc = current()
     if proc is MAIN:
