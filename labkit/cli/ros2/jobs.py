@@ -159,7 +159,7 @@ def start(argv, command, starter, new=False):
     _jobs.append(job)
     if view is not None:
         view.attach(job)
-        process.view = view
+        job.view = process.view = view
     process.sink = None  # from now on the process echoes its own output
     for stream, chunk in _merged(held):
         # what it printed while starting shows now, before what the cell does next
