@@ -106,10 +106,8 @@ class JobView:
 
     def _render(self):
         with self._lock:
-            body = "".join(
-                html.escape(line) if name == "stdout" else
-                f"<span style='color:#b00'>{html.escape(line)}</span>"
-                for name, line in self.lines)
+            # a terminal shows both streams alike
+            body = "".join(html.escape(line) for _, line in self.lines)
         # column-reverse keeps the newest line in sight, as a terminal scrolls
         self.text.value = (
             "<div style='display:flex;flex-direction:column-reverse;max-height:16em;"
