@@ -397,8 +397,9 @@ def pytest_configure(config):
 def test_variant(package_path, edits):
     """Run a package's tests (`colcon test`) on a changed copy of it: a Result.
 
-    `edits` maps a file of the package (relative path) to (old, new) text
-    replacements; each `old` must occur in that file. The copy lives in a
+    `edits` maps a file of the package (relative path) to a list of (old, new)
+    text replacements, each `old` occurring in that file, or to the whole new
+    text of the file (a str; the file may be new). The copy lives in a
     scratch workspace that is removed afterwards, so the learner's workspace
     (build/, log/) is untouched. A test suite that really tests the package
     fails on a copy where the package was broken on purpose: that is how the
@@ -418,6 +419,11 @@ def test_variant(package_path, edits):
                         ignore=shutil.ignore_patterns('__pycache__', '.pytest_cache'))
         for relative, replacements in edits.items():
             path = os.path.join(copy, relative)
+            if isinstance(replacements, str):       # the whole file (new or replaced)
+                os.makedirs(os.path.dirname(path), exist_ok=True)
+                with open(path, 'w', encoding='utf-8') as f:
+                    f.write(replacements)
+                continue
             with open(path, encoding='utf-8') as f:
                 text = f.read()
             for old, new in replacements:

@@ -48,3 +48,12 @@ def test_a_test_that_tests_nothing_passes_on_the_broken_copy(pkg):
 def test_an_edit_that_does_not_apply_is_an_error(pkg):
     with pytest.raises(ValueError):
         colcon_test.test_variant(str(pkg), {'adder/maths.py': [('a * b', 'a')]})
+
+
+def test_a_whole_file_replaces_or_adds_a_file(pkg):
+    (pkg / 'test' / 'test_add.py').write_text('def test_nothing():\n    assert True\n')
+    hidden = 'from adder.maths import add\n\n\ndef test_hidden():\n    assert add(1, 1) == 2\n'
+    result = colcon_test.test_variant(str(pkg), {
+        'test/test_hidden.py': hidden, 'adder/maths.py': 'def add(a, b):\n    return 3\n'})
+    assert result.tests == 2 and result.failures == 1
+    assert not (pkg / 'test' / 'test_hidden.py').exists()
