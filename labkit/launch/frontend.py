@@ -21,9 +21,10 @@ import xml.etree.ElementTree as ET
 import yaml
 
 from labkit.launch.launch_description import LaunchDescription
+from labkit.launch.launch_description_sources import InvalidLaunchFileError, _load_errors
 
-XML_EXTENSIONS = ('launch.xml', 'xml')
-YAML_EXTENSIONS = ('launch.yaml', 'launch.yml', 'yaml', 'yml')
+XML_EXTENSIONS = ('launch.xml', 'xml', 'launch')          # launch_xml's Parser
+YAML_EXTENSIONS = ('launch.yaml', 'launch.yml', 'yaml', 'yml', 'launch')   # launch_yaml's
 
 ENTITIES = 'entities'       # get_attr(data_type=ENTITIES): nested entities of that name
 
@@ -210,23 +211,56 @@ def escape_characters(value):
 
 # ------------------------------------------------------------------ entities
 
+def list_of(scalar):
+    """The type of a list attribute (launch's List[int] etc.): ('list', int)."""
+    return ('list', scalar)
+
+
+def _is_list_type(data_type):
+    return data_type is list or isinstance(data_type, tuple)
+
+
+def _type_text(data_type):
+    """How launch's errors name a type: "<class 'str'>", "typing.List[int]"."""
+    if data_type is list:
+        return 'typing.List'
+    if isinstance(data_type, tuple):
+        return 'typing.List[{}]'.format(data_type[1].__name__)
+    return str(data_type)
+
+
+def _yaml_value(text, can_be_str, error):
+    """One attribute text read by YAML rules (an empty text stays empty). Text YAML cannot
+    read stays text when it may; a mapping, a date, a mixed list... is an error."""
+    if not text:
+        return text
+    try:
+        value = yaml.safe_load(text)
+    except yaml.YAMLError as exc:
+        if can_be_str:
+            return text
+        raise ValueError(f'{error}: yaml.safe_load() failed\n{exc}') from None
+    if not _yaml_is_instance(value, None, can_be_str):
+        raise ValueError(f'{error}: output type is not allowed, got {type(value)}')
+    return value
+
+
 def _coerce(text, data_type, can_be_str=True):
-    """XML text -> the attribute's type, by YAML rules (launch.utilities.type_utils)."""
+    """XML text -> the attribute's type (launch.utilities.type_utils rules): no type means
+    "the best YAML reading"; int/float by their constructors; bool and lists by YAML."""
+    if data_type is None:
+        return _yaml_value(text, can_be_str, f"Failed to convert '{text}' using yaml rules")
+    if _is_list_type(data_type):
+        scalar = data_type[1] if isinstance(data_type, tuple) else None
+        valid = (str,) if can_be_str else ()
+        valid += (scalar,) if scalar else (bool, int, float, str)
+        wanted = f"Cannot convert value '{text}' to a list of '{valid if len(valid) > 1 else valid[0]}'"
+        value = _yaml_value(text, can_be_str, wanted)
+        if not isinstance(value, list) or not all(isinstance(v, valid) for v in value):
+            raise ValueError(wanted)
+        return value
     if data_type is str:
         return text
-    if data_type is None or data_type is list:
-        if not text:
-            return text
-        try:
-            value = yaml.safe_load(text)
-        except yaml.YAMLError:
-            if can_be_str:
-                return text
-            raise ValueError(f"Failed to convert '{text}' using yaml rules")
-        if data_type is list and not isinstance(value, list):
-            raise ValueError(f"Cannot convert value '{text}' to a list")
-        ok = (bool, int, float, str, list)
-        return value if isinstance(value, ok) else text
     if data_type in (int, float):
         try:
             return data_type(text)
@@ -235,17 +269,21 @@ def _coerce(text, data_type, can_be_str=True):
                 return text
             raise
     if data_type is bool:
-        if text.lower() in ('true', 'false'):
-            return text.lower() == 'true'
-        if can_be_str:
-            return text
-        raise ValueError(f"Cannot convert '{text}' to bool")
+        value = _yaml_value(text, can_be_str, f"Failed to convert '{text}' to '{bool}'")
+        if isinstance(value, (bool, str) if can_be_str else bool):
+            return value
+        raise ValueError(f"Cannot convert value '{text}' to '{bool}'")
     return text
 
 
 class XmlEntity:
+    """One XML element (launch_xml's Entity): attributes are read through get_attr, which
+    remembers what was read so that anything left over is reported as unexpected."""
+
     def __init__(self, element):
         self._element = element
+        self._read_attributes = set()
+        self._read_children = set()
 
     @property
     def type_name(self):
@@ -253,37 +291,62 @@ class XmlEntity:
 
     @property
     def children(self):
+        self._read_children = {child.tag for child in self._element}
         return [XmlEntity(child) for child in self._element]
 
+    def assert_entity_completely_parsed(self):
+        tag = self._element.tag
+        nested = {child.tag for child in self._element} - self._read_children
+        if nested:
+            raise ValueError(f'Unexpected nested tag(s) found in `{tag}`: {nested}')
+        attributes = set(self._element.attrib) - self._read_attributes
+        if attributes:
+            raise ValueError(f'Unexpected attribute(s) found in `{tag}`: {attributes}')
+
     def get_attr(self, name, *, data_type=str, optional=False, can_be_str=True):
+        missing = AttributeError("Attribute '{}' of type '{}' not found in Entity '{}'".format(
+            name, 'typing.List[launch.frontend.entity.Entity]' if data_type == ENTITIES
+            else _type_text(data_type), self.type_name))
         if data_type == ENTITIES:
             found = [XmlEntity(child) for child in self._element if child.tag == name]
-            if not found and not optional:
-                raise AttributeError("Attribute '{}' of type '{}' not found in Entity '{}'"
-                                     .format(name, 'List[Entity]', self.type_name))
-            return found or None
+            if not found:
+                if optional:
+                    return None
+                raise missing
+            self._read_children.add(name)
+            return found
         attrib = self._element.attrib
         if name not in attrib:
             if optional:
                 return None
-            raise AttributeError("Attribute '{}' of type '{}' not found in Entity '{}'".format(
-                name, data_type, self.type_name))
+            raise missing
+        self._read_attributes.add(name)
         value = attrib[name]
-        if name + '-sep' in attrib:
-            return [_coerce(v, None if data_type is list else data_type, can_be_str)
-                    for v in value.split(attrib[name + '-sep'])]
+        separator = attrib.get(name + '-sep')
         try:
-            return _coerce(value, data_type, can_be_str)
+            if separator is None:
+                return _coerce(value, data_type, can_be_str)
+            self._read_attributes.add(name + '-sep')
+            if data_type is not None and not _is_list_type(data_type):
+                raise TypeError(f"Cannot convert input '{value.split(separator)}' of type "
+                                f"'{list}' to '{data_type}'")
+            scalar = data_type[1] if isinstance(data_type, tuple) else None
+            return [_coerce(item, scalar, can_be_str) for item in value.split(separator)]
         except ValueError:
             raise TypeError("Attribute '{}' of Entity '{}' expected to be of type '{}'."
                             "'{}' can not be converted to one of those types".format(
-                                name, self.type_name, data_type, value)) from None
+                                name, self.type_name, _type_text(data_type), value)) from None
 
 
 class YamlEntity:
+    """One YAML mapping (launch_yaml's Entity): values keep their YAML types, which must
+    be the ones asked for; keys not read are reported as unexpected."""
+
     def __init__(self, element, type_name):
         self._element = element
         self._type_name = type_name
+        self._read_keys = set()
+        self._children_read = False
 
     @property
     def type_name(self):
@@ -291,17 +354,19 @@ class YamlEntity:
 
     @property
     def children(self):
+        self._children_read = True
         element = self._element
+        if not isinstance(element, (dict, list)):
+            raise TypeError(f'Expected a dict or list, got {type(element)}:'
+                            f'\n---\n{element}\n---')
         if isinstance(element, dict):
             if 'children' not in element:
                 raise ValueError(
                     f'Expected entity `{self._type_name}` to have children entities.'
                     f'That can be a list of subentities or a dictionary with a `children` '
                     'list element')
+            self._read_keys.add('children')
             element = element['children']
-        if not isinstance(element, list):
-            raise TypeError(f'Expected a dict or list, got {type(element)}:'
-                            f'\n---\n{element}\n---')
         out = []
         for child in element:
             if not isinstance(child, dict) or len(child) != 1:
@@ -311,6 +376,16 @@ class YamlEntity:
             out.append(YamlEntity(body, type_name))
         return out
 
+    def assert_entity_completely_parsed(self):
+        if isinstance(self._element, list):
+            if not self._children_read:
+                raise ValueError(f'Unexpected nested entity(ies) found in '
+                                 f'`{self._type_name}`: {self._element}')
+            return
+        keys = set(self._element or {}) - self._read_keys
+        if keys:
+            raise ValueError(f'Unexpected key(s) found in `{self._type_name}`: {keys}')
+
     def get_attr(self, name, *, data_type=str, optional=False, can_be_str=True):
         element = self._element if isinstance(self._element, dict) else {}
         if name not in element:
@@ -318,18 +393,37 @@ class YamlEntity:
                 return None
             raise AttributeError("Can not find attribute '{}' in Entity '{}'".format(
                 name, self._type_name))
+        self._read_keys.add(name)
         data = element[name]
         if data_type == ENTITIES:
             if isinstance(data, list) and data and isinstance(data[0], dict):
                 return [YamlEntity(child, name) for child in data]
             raise TypeError("Attribute '{}' of Entity '{}' expected to be a list of "
                             "dictionaries.".format(name, self._type_name))
-        if data_type is not None and not isinstance(data, data_type) and \
-                not (can_be_str and isinstance(data, str)) and \
-                not (data_type is float and isinstance(data, int)):
+        if not _yaml_is_instance(data, data_type, can_be_str):
             raise TypeError("Attribute '{}' of Entity '{}' expected to be of type '{}', got "
-                            "'{}'".format(name, self._type_name, data_type, type(data)))
+                            "'{}'".format(name, self._type_name, _type_text(data_type),
+                                          type(data)))
         return data
+
+
+def _yaml_is_instance(data, data_type, can_be_str):
+    """launch's is_instance_of, exactly as strict: a YAML value of the asked type (`5` is
+    an int, not a float; True is an int, as in Python); a text passes when it can be a
+    string (it may hold substitutions). No type: any scalar, or a list of one scalar type."""
+    scalars = (bool, int, float, str)
+    if data_type is None:
+        if not isinstance(data, list):
+            return isinstance(data, scalars)
+        member = next((type(v) for v in data if type(v) is not str), str)
+        if member not in scalars:
+            return False
+        return all(isinstance(v, (member, str) if can_be_str else member) for v in data)
+    if _is_list_type(data_type):
+        scalar = data_type[1] if isinstance(data_type, tuple) else object
+        wanted = (str, scalar) if can_be_str else scalar
+        return isinstance(data, list) and all(isinstance(v, wanted) for v in data)
+    return isinstance(data, (str, data_type) if can_be_str else data_type)
 
 
 # ------------------------------------------------------------------ actions
@@ -353,7 +447,12 @@ def _text(entity, name, optional=False):
 
 
 def _pairs(entities, first, second):
-    return [(_text(e, first), _text(e, second)) for e in entities or []]
+    """Nested (name, value) entities: `<arg>` of include, `<keep>`, `<env>`, `<remap>`;
+    each must have nothing else."""
+    pairs = [(_text(e, first), _text(e, second)) for e in entities or []]
+    for e in entities or []:
+        e.assert_entity_completely_parsed()
+    return pairs
 
 
 def _cmdline(text):
@@ -453,8 +552,7 @@ def _append_env(entity):
     kwargs = _condition(entity)
     prepend = entity.get_attr('prepend', data_type=bool, optional=True)
     if prepend is not None:
-        kwargs['prepend'] = prepend if isinstance(prepend, bool) else \
-            str(prepend).lower() == 'true'
+        kwargs['prepend'] = parse_if_substitutions(prepend)
     separator = entity.get_attr('separator', optional=True)
     if separator is not None:
         kwargs['separator'] = str(separator)
@@ -463,10 +561,13 @@ def _append_env(entity):
 
 def _timer(entity):
     from labkit.launch.actions import TimerAction
-    period = entity.get_attr('period', data_type=float)
-    period = parse_if_substitutions(period) if isinstance(period, str) else float(period)
-    return TimerAction(period=period, actions=[parse_action(c) for c in entity.children],
-                       **_condition(entity))
+    kwargs = _condition(entity)
+    kwargs['period'] = parse_if_substitutions(entity.get_attr('period', data_type=float))
+    kwargs['actions'] = [parse_action(c) for c in entity.children]
+    cancel = entity.get_attr('cancel_on_shutdown', data_type=bool, optional=True)
+    if cancel is not None:
+        kwargs['cancel_on_shutdown'] = parse_if_substitutions(cancel)
+    return TimerAction(**kwargs)
 
 
 def _shutdown(entity):
@@ -478,19 +579,24 @@ def _shutdown(entity):
     return Shutdown(**kwargs)
 
 
-def _process_kwargs(entity, ignore=()):
+def _process_kwargs(entity, with_cmd=True):
+    """What `<executable>` and `<node>` share (launch's ExecuteProcess.parse)."""
     kwargs = _condition(entity)
-    if 'cmd' not in ignore:
+    if with_cmd:
         kwargs['cmd'] = _cmdline(str(entity.get_attr('cmd')))
     for attr, key in (('cwd', 'cwd'), ('name', 'name'), ('launch-prefix', 'prefix'),
                       ('output', 'output'), ('respawn', 'respawn')):
-        if key in ignore:
-            continue
         value = entity.get_attr(attr, optional=True)
         if value is not None:
             kwargs[key] = parse_substitution(str(value))
-    shell = entity.get_attr('shell', data_type=bool, optional=True, can_be_str=False)
-    if shell is not None and 'shell' not in ignore:
+    delay = entity.get_attr('respawn_delay', data_type=float, optional=True)
+    if delay is not None:
+        if isinstance(delay, float) and delay < 0.0:
+            raise ValueError('Attribute respawn_delay of Entity node expected to be '
+                             'a non-negative value but got `{}`'.format(delay))
+        kwargs['respawn_delay'] = delay
+    shell = entity.get_attr('shell', data_type=bool, optional=True)
+    if shell is not None:
         kwargs['shell'] = shell
     env = entity.get_attr('env', data_type=ENTITIES, optional=True)
     if env is not None:
@@ -500,34 +606,32 @@ def _process_kwargs(entity, ignore=()):
 
 def _executable(entity):
     from labkit.launch.actions import ExecuteProcess
-    kwargs = _process_kwargs(entity)
-    kwargs.pop('respawn', None)
-    kwargs.pop('prefix', None)
-    kwargs.pop('cwd', None)
-    return ExecuteProcess(**kwargs)
+    return ExecuteProcess(**_process_kwargs(entity))
 
 
 _PARAM_TYPES = {'str': str, 'int': int, 'float': float, 'bool': bool,
-                'list_of_str': list, 'list_of_int': list, 'list_of_float': list,
-                'list_of_bool': list}
+                'list_of_str': list_of(str), 'list_of_int': list_of(int),
+                'list_of_float': list_of(float), 'list_of_bool': list_of(bool), 'yaml': None}
 
 
 def _parameters(entities):
-    """<param name= value=/>, nested <param name=><param .../></param>, <param from=/>."""
+    """<param name= value= type=/>, nested <param name=><param .../></param>, and
+    <param from= allow_substs=/> (launch_ros's Node.parse_nested_parameters rules)."""
     from labkit.launch_ros.parameter_descriptions import ParameterFile, ParameterValue
 
     def nested(params):
         out = {}
         for param in params:
             name = tuple(_text(param, 'name'))
-            type_id = param.get_attr('type', optional=True)
+            type_id = param.get_attr('type', data_type=None, optional=True)
             data_type = None
             if type_id is not None:
                 if type_id not in _PARAM_TYPES:
-                    raise ValueError(f'Unknown type identifier: {type_id}')
+                    raise ValueError(f"Got invalid type identifier '{type_id}'")
                 data_type = _PARAM_TYPES[type_id]
-            value = param.get_attr('value', data_type=None, optional=True)
+            value = param.get_attr('value', data_type=data_type, optional=True)
             children = param.get_attr('param', data_type=ENTITIES, optional=True)
+            param.assert_entity_completely_parsed()
             if value is not None and children:
                 raise RuntimeError('nested parameters and value attributes are mutually '
                                    'exclusive')
@@ -535,10 +639,9 @@ def _parameters(entities):
                 raise RuntimeError('nested parameters and type attributes are mutually '
                                    'exclusive')
             if value is not None:
-                if data_type is str and not isinstance(value, str):
-                    value = str(value)
+                value_type = list if _is_list_type(data_type) else data_type
                 out[name] = ParameterValue(parse_if_substitutions(value),
-                                           value_type=data_type)
+                                           value_type=value_type)
             elif children:
                 out[name] = nested(children)
             else:
@@ -548,14 +651,19 @@ def _parameters(entities):
     normalized = []
     for param in entities:
         source = param.get_attr('from', optional=True)
+        allow = param.get_attr('allow_substs', data_type=bool, optional=True)
         name = param.get_attr('name', optional=True)
         if source is not None and name is not None:
             raise RuntimeError('name and from attributes are mutually exclusive')
         if source is not None:
-            allow = param.get_attr('allow_substs', data_type=bool, optional=True)
+            allow = parse_substitution(allow) if isinstance(allow, str) else bool(allow)
+            param.assert_entity_completely_parsed()
             normalized.append(ParameterFile(parse_substitution(str(source)),
-                                            allow_substs=bool(allow)))
+                                            allow_substs=allow))
         elif name is not None:
+            if allow is not None:
+                raise RuntimeError("'allow_substs' can only be used together with 'from' "
+                                   'attribute')
             normalized.append(nested([param]))
         else:
             raise ValueError('param Entity should have name or from attribute')
@@ -563,9 +671,9 @@ def _parameters(entities):
 
 
 def _node(entity):
+    """launch_ros's `node`: every `executable` attribute but `cmd`, and its own."""
     from labkit.launch_ros.actions import Node
-    kwargs = _process_kwargs(entity, ignore=('cmd', 'cwd', 'prefix', 'shell'))
-    kwargs.pop('additional_env', None)
+    kwargs = _process_kwargs(entity, with_cmd=False)
     args = entity.get_attr('args', optional=True)
     if args is not None:
         kwargs['arguments'] = _cmdline(str(args))
@@ -573,13 +681,14 @@ def _node(entity):
     if ros_args is not None:
         kwargs['ros_arguments'] = _cmdline(str(ros_args))
     for attr, key in (('node-name', 'node_name'), ('name', 'name'),
-                      ('exec_name', 'exec_name'), ('pkg', 'package'),
-                      ('namespace', 'namespace')):
+                      ('exec_name', 'exec_name'), ('pkg', 'package')):
         value = entity.get_attr(attr, optional=True)
         if value is not None:
             kwargs[key] = parse_substitution(str(value))
     kwargs['executable'] = _text(entity, 'exec')
-    kwargs.pop('respawn', None)
+    namespace = entity.get_attr('namespace', optional=True)
+    if namespace is not None:
+        kwargs['namespace'] = parse_substitution(str(namespace))
     remaps = entity.get_attr('remap', data_type=ENTITIES, optional=True)
     if remaps is not None:
         kwargs['remappings'] = _pairs(remaps, 'from', 'to')
@@ -604,9 +713,15 @@ def _set_remap(entity):
     return SetRemap(_text(entity, 'from'), _text(entity, 'to'), **_condition(entity))
 
 
+def _reset_env(entity):
+    from labkit.launch.actions import ResetEnvironment
+    return ResetEnvironment(**_condition(entity))
+
+
 ACTIONS = {
     'arg': _arg, 'let': _let, 'group': _group, 'include': _include, 'log': _log,
     'set_env': _set_env, 'unset_env': _unset_env, 'append_env': _append_env,
+    'reset_env': _reset_env,
     'timer': _timer, 'shutdown': _shutdown, 'executable': _executable, 'node': _node,
     'push-ros-namespace': _push_ros_namespace, 'push_ros_namespace': _push_ros_namespace,
     'set_parameter': _set_parameter, 'set_remap': _set_remap,
@@ -614,10 +729,14 @@ ACTIONS = {
 
 
 def parse_action(entity):
+    """One tag -> its action; then whatever the tag has that its action did not read
+    (an attribute, a nested tag) is an error, as launch's expose_action wrapper says."""
     parse = ACTIONS.get(entity.type_name)
     if parse is None:
         raise RuntimeError('Unrecognized entity of the type: {}'.format(entity.type_name))
-    return parse(entity)
+    action = parse(entity)
+    entity.assert_entity_completely_parsed()
+    return action
 
 
 def parse_description(entity):
@@ -630,12 +749,34 @@ def parse_description(entity):
 
 # ------------------------------------------------------------------ files
 
+class InvalidFrontendLaunchFileError(InvalidLaunchFileError):
+    """launch.frontend.InvalidFrontendLaunchFileError: no parser could read the file."""
+
+
+def _parsers():
+    """launch's parser extensions, by entry-point name (xml, then yaml), each with the
+    file endings it claims."""
+    return [(_load_xml, XML_EXTENSIONS), (_load_yaml, YAML_EXTENSIONS)]
+
+
 def load(path):
-    """The root entity of an XML or YAML launch file (chosen by its extension; a file of
-    neither is tried as XML, then YAML, as launch tries every parser)."""
-    if path.endswith(tuple('.' + e for e in YAML_EXTENSIONS)):
-        return _load_yaml(path)
-    return _load_xml(path)
+    """The root entity of an XML or YAML launch file, as launch.frontend.Parser.load: the
+    parsers that claim the file's ending first, then every other one; when none can read
+    it, one error that lists what each said."""
+    claimed = [load for load, endings in _parsers() if _ends_with(path, endings)]
+    order = claimed + [load for load, _ in _parsers() if load not in claimed]
+    errors = []
+    for load_file in order:
+        try:
+            return load_file(path)
+        except Exception as exc:        # noqa: BLE001 - every parser's error is reported
+            errors.append(exc)
+    extension = frontend_format(path) if is_frontend_file(path) else ''
+    raise InvalidFrontendLaunchFileError(_load_errors(extension, errors))
+
+
+def _ends_with(path, endings):
+    return path.endswith(tuple('.' + e for e in endings))
 
 
 def _load_xml(path):
@@ -645,10 +786,10 @@ def _load_xml(path):
 def _load_yaml(path):
     with open(path, encoding='utf-8') as f:
         tree = yaml.safe_load(f)
-    if not isinstance(tree, dict) or len(tree) != 1:
+    if len(tree) != 1:         # None has no len() (an empty file): launch's TypeError too
         raise RuntimeError('Expected only one root')
-    (type_name, body), = tree.items()
-    return YamlEntity(body, type_name)
+    type_name, = tree.keys()        # a list: AttributeError, as launch_yaml's
+    return YamlEntity(tree[type_name], type_name)
 
 
 def get_launch_description_from_frontend_launch_file(path):
