@@ -25,6 +25,7 @@ every canvas's commands, and any failure, to itself.
 import io
 import threading
 import time
+import weakref
 
 import numpy as np
 from PIL import Image
@@ -32,6 +33,7 @@ from PIL import Image
 from labkit.sims.turtlesim import physics, sprites
 
 SIZE = physics.WINDOW_SIZE
+_following = weakref.WeakSet()          # canvases whose thread follows a simulation
 
 
 # ------------------------------------------------------------------ static rendering
@@ -196,6 +198,7 @@ class TurtleCanvas:
         self._thread._labkit_world = True          # not a world thread: no baton
         self._thread._labkit_process = process.MAIN  # not joined when turtlesim stops
         self._thread.start()
+        _following.add(self)
 
     def stop(self):
         """Stop following (the widget keeps its last picture)."""
@@ -286,6 +289,23 @@ class TurtleCanvas:
                 turtle_layer.restore()
         self._drawn = (background, turtles, seq)
         self.frames_drawn += 1
+
+
+def stop_all():
+    """labkit.reset(): no canvas goes on following (each keeps its last picture;
+    displaying it again starts it again)."""
+    for canvas in list(_following):
+        canvas.stop()
+    _following.clear()
+
+
+def _install_reset_hook():
+    from labkit import process
+    if stop_all not in process.reset_hooks:
+        process.reset_hooks.append(stop_all)
+
+
+_install_reset_hook()
 
 
 def _stroke_ops(layer, ops):

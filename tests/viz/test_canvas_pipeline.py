@@ -140,3 +140,20 @@ def test_a_failed_frame_still_leaves_its_commands_whole(live, browser, monkeypat
     assert c._manager._commands_cache == []
     assert not browser.errors
     c.close()
+
+
+def test_reset_leaves_no_canvas_following(live, browser):
+    from labkit.viz.canvas import TurtleCanvas
+    labkit.ros2("run turtlesim turtlesim_node")
+    canvases = [TurtleCanvas.attach() for _ in range(3)]
+    for c in canvases:
+        c.start()
+    threads = [c._thread for c in canvases]
+    labkit.reset()
+    assert all(not t.is_alive() for t in threads)
+    labkit.ros2("run turtlesim turtlesim_node")      # a new turtlesim: a new canvas works
+    fresh = TurtleCanvas.attach()
+    fresh.start()
+    assert fresh.frames_drawn == 1 and fresh._thread.is_alive()
+    assert "putImageData" in browser.drawn[fresh._layers[1].model_id]
+    fresh.close()
