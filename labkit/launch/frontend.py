@@ -4,11 +4,13 @@ becomes the same launch description a Python launch file builds.
 The tags and attributes are the real ones (launch's and launch_ros's `parse` methods):
 `launch` (root), `arg` (+ `choice`), `let`, `group` (`scoped`, `forwarding`, `keep`),
 `include` (`file`, + `arg`), `log`, `set_env`, `unset_env`, `append_env`, `timer`,
-`shutdown`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`, `shell`, + `env`),
-`node` (`pkg`, `exec`, `name`, `namespace`, `exec_name`, `args`, `ros_args`, `output`,
-`respawn`, `launch-prefix`, + `param`, `remap`, `env`), `push-ros-namespace` (also
-`push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
-Substitutions are written `$(name arg ...)`: var, env, eval, anon, not, and, command,
+`shutdown`, `reset_env`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`,
+`respawn`, `respawn_delay`, `shell`, + `env`), `node` (the same but `cmd`, and `pkg`, `exec`,
+`name`, `namespace`, `exec_name`, `args`, `ros_args`, + `param`, `remap`), `push-ros-namespace`
+(also `push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
+As in Humble, an attribute, nested tag or YAML key that the tag's parser did not read is an
+error ("Unexpected attribute(s) found in `node`: {'nmae'}").
+Substitutions are written `$(name arg ...)`: var, env, eval, anon, not, and, or, command,
 find-exec, dirname, filename, find-pkg-share, find-pkg-prefix, exec-in-pkg.
 
 XML attributes are text, coerced to the type an attribute needs (YAML rules, as
@@ -152,9 +154,11 @@ def instantiate_substitution(name, args):
     if name == 'not':
         _arity(name, args, 1)
         return s.NotSubstitution(args[0])
-    if name == 'and':
-        _arity(name, args, 2)
-        return s.AndSubstitution(args[0], args[1])
+    if name in ('and', 'or'):
+        if len(args) != 2:         # Humble's `or` says 'and' here too
+            raise TypeError('and substitution expects 2 arguments')
+        cls = s.AndSubstitution if name == 'and' else s.OrSubstitution
+        return cls(args[0], args[1])
     if name == 'command':
         if not 1 <= len(args) <= 2:
             raise ValueError('command substitution expects 1 or 2 arguments')

@@ -113,6 +113,15 @@ class AndSubstitution(Substitution):
                    evaluate_condition_expression(context, self.right)).lower()
 
 
+class OrSubstitution(AndSubstitution):
+    """`$(or a b)` / OrSubstitution(a, b): 'true' when either side is (Humble has it too)."""
+
+    def perform(self, context):
+        from labkit.launch.conditions import evaluate_condition_expression
+        return str(evaluate_condition_expression(context, self.left) or
+                   evaluate_condition_expression(context, self.right)).lower()
+
+
 class NotSubstitution(Substitution):
     def __init__(self, value):
         self.value = normalize_to_list_of_substitutions(value)

@@ -249,7 +249,7 @@ SUBSTITUTIONS = '''\
       <log message="share=$(find-pkg-share turtlesim)"/>
       <log message="prefix=$(find-pkg-prefix turtlesim)"/>
       <log message="exec=$(exec-in-pkg turtlesim_node turtlesim)"/>
-      <log message="bool=$(not $(eval '2 > 1')) $(and true $(var flag true))"/>
+      <log message="bool=$(not $(eval '2 > 1')) $(and true $(var flag true)) $(or $(var flag) true)"/>
       <log message="escaped=\\$(var who)"/>
     </launch>
     '''
@@ -286,7 +286,7 @@ def test_every_substitution(tmp_path, ext):
         'share': get_package_share_directory('turtlesim'),
         'prefix': get_package_prefix('turtlesim'),
         'exec': '/opt/ros/humble/lib/turtlesim/turtlesim_node',
-        'bool': 'false false',
+        'bool': 'false false true',
         'escaped': '$(var who)',
     }
 
