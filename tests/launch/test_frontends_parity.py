@@ -464,3 +464,84 @@ def test_launch_a_package_xml_file_with_arguments_and_show_args(ws):
     labkit.sleep(1.0)
     assert labkit.ros2('node list').stdout.split() == ['/follower', '/lake/sim']
     assert '/lake/pose: turtlesim/msg/Pose' in labkit.ros2('node info /follower').stdout
+
+
+# ------------------------------------------------------------------ the tutorial's shape
+
+COLORS = {
+    'yaml': '''\
+        launch:
+        - arg: {name: pond, default: 'pond1'}
+        - arg: {name: really, default: 'False'}
+        - arg: {name: red, default: '90'}
+        - node: {pkg: turtlesim, exec: turtlesim_node, name: sim, namespace: '$(var pond)'}
+        - executable:
+            cmd: 'ros2 service call $(var pond)/spawn turtlesim/srv/Spawn "{x: 3, y: 4}"'
+        - executable:
+            cmd: 'ros2 param set $(var pond)/sim background_r 10'
+        - timer:
+            period: 2.0
+            children:
+            - executable:
+                cmd: 'ros2 param set $(var pond)/sim background_r $(var red)'
+                if: '$(eval "$(var red) == 90 and $(var really)")'
+        ''',
+    'xml': '''\
+        <launch>
+          <arg name="pond" default="pond1"/>
+          <arg name="really" default="False"/>
+          <arg name="red" default="90"/>
+          <node pkg="turtlesim" exec="turtlesim_node" name="sim" namespace="$(var pond)"/>
+          <executable
+              cmd="ros2 service call $(var pond)/spawn turtlesim/srv/Spawn '{x: 3, y: 4}'"/>
+          <executable cmd="ros2 param set $(var pond)/sim background_r 10"/>
+          <timer period="2.0">
+            <executable cmd="ros2 param set $(var pond)/sim background_r $(var red)"
+                        if="$(eval '$(var red) == 90 and $(var really)')"/>
+          </timer>
+        </launch>
+        ''',
+}
+
+MAIN = {
+    'yaml': '''\
+        launch:
+        - let: {name: r, value: '90'}
+        - include:
+            file: '$(dirname)/colors.launch.yaml'
+            arg:
+            - {name: pond, value: pond2}
+            - {name: really, value: 'True'}
+            - {name: red, value: '$(var r)'}
+        ''',
+    'xml': '''\
+        <launch>
+          <let name="r" value="90"/>
+          <include file="$(dirname)/colors.launch.xml">
+            <arg name="pond" value="pond2"/>
+            <arg name="really" value="True"/>
+            <arg name="red" value="$(var r)"/>
+          </include>
+        </launch>
+        ''',
+}
+
+
+@pytest.mark.parametrize('ext', ['xml', 'yaml'])
+def test_executables_timer_and_eval_condition_as_in_the_substitutions_tutorial(tmp_path, ext):
+    """The shape of the official "Using substitutions" tutorial: a main file passes `let`
+    values to an include; `executable` runs ros2 commands; a timer's `if` uses `$(eval)`."""
+    _write(tmp_path, f'colors.launch.{ext}', COLORS[ext])
+    main = _write(tmp_path, f'main.launch.{ext}', MAIN[ext])
+    job = labkit.ros2(f'launch {main}')
+    labkit.sleep(1.0)
+    assert labkit.ros2('param get /pond2/sim background_r').stdout == 'Integer value is: 10\n'
+    assert '/pond2/turtle2/pose' in labkit.ros2('topic list').stdout.split()
+    labkit.sleep(2.0)
+    assert labkit.ros2('param get /pond2/sim background_r').stdout == 'Integer value is: 90\n'
+    assert '[INFO] [ros2-4]: process has finished cleanly' in ' '.join(job.output)
+    labkit.reset()
+    colors = tmp_path / f'colors.launch.{ext}'
+    labkit.ros2(f'launch {colors}')                     # really defaults to False: no timer
+    labkit.sleep(3.0)
+    assert labkit.ros2('param get /pond1/sim background_r').stdout == 'Integer value is: 10\n'
