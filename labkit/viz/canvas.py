@@ -151,13 +151,10 @@ class TurtleCanvas:
         return bytes(self.snapshot())
 
     def _ipython_display_(self):
-        from labkit import process
-        from labkit.viz.display import show
+        from labkit.viz.display import register_window, show
         widget = self.widget
         self.start()
-        proc = process.current()
-        if proc is not process.MAIN and self not in proc.windows:
-            proc.windows.append(self)   # turtlesim's window: shown again if its cell re-runs
+        register_window(self)           # turtlesim's window: shown again if its cell re-runs
         show(widget, png=self.snapshot(), text="<turtlesim canvas>")
 
     # -- live face ----------------------------------------------------------------------
@@ -189,15 +186,12 @@ class TurtleCanvas:
             return
         self.widget
         self._stop.clear()
-        # a plain thread: it only reads the world, so it never takes part in virtual time
-        self._thread = threading.Thread(target=self._follow, name="turtle-canvas", daemon=True)
+        # a plain thread: it only reads the world, so it never takes part in virtual time.
         # turtlesim_node shows its window from its own process thread; labkit.process would
         # then adopt this thread into that process and into virtual time, where its plain
         # Event waits hold the baton forever. A viewer belongs to neither.
-        from labkit import process
-        self._thread._labkit_world = True          # not a world thread: no baton
-        self._thread._labkit_process = process.MAIN  # not joined when turtlesim stops
-        self._thread.start()
+        from labkit.viz.display import viewer_thread
+        self._thread = viewer_thread(self._follow, "turtle-canvas")
         _following.add(self)
 
     def stop(self):

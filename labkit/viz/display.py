@@ -32,3 +32,39 @@ def bundle(widget=None, png=None, svg=None, html=None, jpeg=None, text="<labkit 
 def show(widget=None, *, png=None, svg=None, html=None, jpeg=None, text="<labkit picture>"):
     """Display a widget together with its static picture in one output."""
     display(bundle(widget, png=png, svg=svg, html=html, jpeg=jpeg, text=text), raw=True)
+
+
+def live_kernel():
+    """True in live time inside a Jupyter kernel: where live views (widgets that follow
+    the graph) belong. Virtual time (nbval, book-exec) stores plain, repeatable output."""
+    from labkit.graph import world
+    if world.mode() != "live":
+        return False
+    try:
+        from IPython import get_ipython
+    except ImportError:
+        return False
+    shell = get_ipython()
+    return shell is not None and getattr(shell, "kernel", None) is not None
+
+
+def register_window(view):
+    """A view opened by a program (turtlesim's canvas, a key pad) belongs to its process:
+    when the cell that started the program runs again, the view is shown again."""
+    from labkit import process
+    proc = process.current()
+    if proc is not process.MAIN and view not in proc.windows:
+        proc.windows.append(view)
+
+
+def viewer_thread(target, name):
+    """Start a daemon thread for a viewer: it takes no part in virtual time and belongs
+    to no labkit process (stopping the program it shows does not join it)."""
+    import threading
+
+    from labkit import process
+    thread = threading.Thread(target=target, name=name, daemon=True)
+    thread._labkit_world = True
+    thread._labkit_process = process.MAIN
+    thread.start()
+    return thread

@@ -19,15 +19,8 @@ FPS = 8                  # redraws a second at most
 
 def enabled():
     """True in live time inside a Jupyter kernel (where widgets can show)."""
-    from labkit.graph import world
-    if world.mode() != "live":
-        return False
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return False
-    shell = get_ipython()
-    return shell is not None and getattr(shell, "kernel", None) is not None
+    from labkit.viz.display import live_kernel
+    return live_kernel()
 
 
 class JobView:
@@ -53,13 +46,8 @@ class JobView:
             [widgets.HBox([self.button, self.title], layout=widgets.Layout(align_items="center")),
              self.text],
             layout=widgets.Layout(border="1px solid #ccc", padding="4px", width="100%"))
-        self._thread = threading.Thread(target=self._refresh, name="labkit-job-view",
-                                        daemon=True)
-        # a viewer takes no part in virtual time and belongs to no process
-        from labkit import process
-        self._thread._labkit_world = True
-        self._thread._labkit_process = process.MAIN
-        self._thread.start()
+        from labkit.viz.display import viewer_thread
+        self._thread = viewer_thread(self._refresh, "labkit-job-view")
 
     # -- what the job prints (any thread) --------------------------------------------
     def attach(self, job):

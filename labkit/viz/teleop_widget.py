@@ -103,11 +103,8 @@ class TeleopWidget:
         return "<span style='font-size:11px;color:#555'>last key: %s</span>" % last
 
     def show(self):
-        from labkit import process
-        from labkit.viz.display import show
-        proc = process.current()
-        if proc is not process.MAIN and self not in proc.windows:
-            proc.windows.append(self)   # shown again if the cell that started it re-runs
+        from labkit.viz.display import register_window, show
+        register_window(self)           # shown again if the cell that started it re-runs
         # Static face (HTML book): a picture of the key pad. The banner itself is
         # already in the process output, so it is not repeated here.
         show(self.box, text="<turtle_teleop_key keyboard>", html=static_keypad_html())
@@ -178,11 +175,8 @@ class KeyPad:
                 f"<b>{html.escape(self.title)}</b><br>{pads}</div>")
 
     def show(self):
-        from labkit import process
-        from labkit.viz.display import show
-        proc = process.current()
-        if proc is not process.MAIN and self not in proc.windows:
-            proc.windows.append(self)
+        from labkit.viz.display import register_window, show
+        register_window(self)
         show(self.box, text=f"<{self.title} keyboard>", html=self.static_html())
 
     def _ipython_display_(self):

@@ -119,15 +119,8 @@ def picture(sim=None, pixels=480, rays=True, path=None):
 
 
 def _live_kernel():
-    from labkit.graph import world
-    if world.mode() != "live":
-        return False
-    try:
-        from IPython import get_ipython
-    except ImportError:
-        return False
-    shell = get_ipython()
-    return shell is not None and getattr(shell, "kernel", None) is not None
+    from labkit.viz.display import live_kernel
+    return live_kernel()
 
 
 class LiveView:
@@ -163,16 +156,12 @@ class LiveView:
         return self._widget
 
     def start(self):
-        import threading
         if self._thread is not None and self._thread.is_alive():
             return
         self.widget
         self._stop.clear()
-        self._thread = threading.Thread(target=self._follow, name="world2d-view", daemon=True)
-        from labkit import process
-        self._thread._labkit_world = True          # a viewer: no part in virtual time
-        self._thread._labkit_process = process.MAIN
-        self._thread.start()
+        from labkit.viz.display import viewer_thread
+        self._thread = viewer_thread(self._follow, "world2d-view")
 
     def stop(self):
         self._stop.set()

@@ -126,7 +126,7 @@ def _open_terminal(teleop):
         from IPython import get_ipython
         shell = get_ipython()
         if shell is not None:
-            return _open_keypad(teleop, shell)
+            return _open_keypad(teleop)
     except ImportError:
         pass
     from labkit.sims._tty import open_terminal_keys
@@ -134,11 +134,11 @@ def _open_terminal(teleop):
                               name="teleop-twist-tty")
 
 
-def _open_keypad(teleop, shell):
+def _open_keypad(teleop):
     """Live JupyterLab: a key pad in the cell, for the keys a terminal would take.
     (Unattended runs type with `press(...)`: their stored output stays plain text.)"""
-    from labkit.graph import world
-    if getattr(shell, "kernel", None) is None or world.mode() != "live":
+    from labkit.viz.display import live_kernel
+    if not live_kernel():
         return None
     from labkit.viz.teleop_widget import KeyPad
     pad = KeyPad(teleop.press, "teleop_twist_keyboard", KEYPAD)
