@@ -4,7 +4,8 @@
 
 OURS are notebooks (each code cell is one text), files, or folders (every text file in
 them). The references are read from the given folders only (nothing is downloaded and
-nothing of theirs is kept): .py .rst .xml .yaml .yml .md .cpp .hpp .launch .txt files.
+nothing of theirs is kept): source, documentation, model and config files (REF_SUFFIXES;
+interface definitions .msg .srv .action are left out: those must be identical).
 Prints, per text of ours, the longest run it shares with any reference file (length,
 where), longest first, and exits 1 when a run reaches --limit characters (default 200).
 
@@ -24,7 +25,8 @@ import re
 import sys
 
 ANCHOR = 40
-REF_SUFFIXES = ('.py', '.rst', '.xml', '.yaml', '.yml', '.md', '.cpp', '.hpp', '.launch', '.txt')
+REF_SUFFIXES = ('.py', '.rst', '.xml', '.yaml', '.yml', '.md', '.cpp', '.hpp', '.h', '.launch', '.txt',
+                '.urdf', '.xacro', '.sdf', '.world', '.rviz', '.cfg', '.ini', '.sh', '.bash', '.json', '.em', '.in')
 
 
 def our_texts(paths):

@@ -50,11 +50,12 @@ class QoSCompatibilityReport:
         report = Report('QOS COMPATIBILITY LIST')
         for topic, pub, sub in _pairs(doctor):
             compatibility, reason = qos_check_compatible(pub.qos_profile, sub.qos_profile)
-            report.add_to_report('topic [type]', f'{topic} [{pub.topic_type}]')
-            report.add_to_report('publisher node', pub.node_name)
-            report.add_to_report('subscriber node', sub.node_name)
-            report.add_to_report('compatibility status',
-                                 'OK' if compatibility == QoSCompatibility.OK else reason)
+            status = 'OK' if compatibility == QoSCompatibility.OK else reason
+            for label, value in (('topic [type]', f'{topic} [{pub.topic_type}]'),
+                                 ('publisher node', pub.node_name),
+                                 ('subscriber node', sub.node_name),
+                                 ('compatibility status', status)):
+                report.add_to_report(label, value)
         if not report.items:
             report.add_to_report('compatibility status', 'No publisher/subscriber pairs found')
         return report

@@ -174,39 +174,44 @@ def set_message_fields(msg, values, expand_header_auto=False, expand_time_now=Fa
         except AttributeError:
             raise TypeError("Value '%s' is expected to be a dictionary but is a %s"
                             % (values, type(values).__name__)) from None
-        for field_name, field_value in items:
-            field = getattr(msg, field_name)
-            field_type = type(field)
-            qualified = '{}.{}'.format(field_type.__module__, field_type.__name__)
-            if field_type is array.array:
-                value = field_type(field.typecode, field_value)
-            elif field_type is numpy.ndarray:
-                value = numpy.array(field_value, dtype=field.dtype)
-            elif type(field_value) is field_type:
-                value = field_value
-            elif (qualified == 'std_msgs.msg._header.Header' and field_value == 'auto'
-                  and expand_header_auto):
-                timestamp_fields.append(partial(setattr, field, 'stamp'))
+        slot_types = get_message_slot_types(msg)
+        for name, given in items:
+            current = getattr(msg, name)
+            kind = type(current)
+            where = kind.__module__ + '.' + kind.__name__
+            # 'auto' headers and 'now' stamps are filled in later, by the caller
+            if where == 'std_msgs.msg._header.Header' and expand_header_auto and given == 'auto':
+                timestamp_fields.append(partial(setattr, current, 'stamp'))
                 continue
-            elif (qualified == 'builtin_interfaces.msg._time.Time' and field_value == 'now'
-                  and expand_time_now):
-                timestamp_fields.append(partial(setattr, msg, field_name))
+            if where == 'builtin_interfaces.msg._time.Time' and expand_time_now and given == 'now':
+                timestamp_fields.append(partial(setattr, msg, name))
                 continue
-            else:
-                try:
-                    value = field_type(field_value)
-                except TypeError:
-                    value = field_type()
-                    fill(value, field_value)
-            rosidl_type = get_message_slot_types(msg)[field_name]
-            if isinstance(rosidl_type, d.AbstractNestedType):
-                if isinstance(rosidl_type.value_type, d.NamespacedType):
-                    elem_type = _class_of(rosidl_type.value_type)
-                    for n in range(len(value)):
-                        submsg = elem_type()
-                        fill(submsg, value[n])
-                        value[n] = submsg
-            setattr(msg, field_name, value)
+            setattr(msg, name, _nested(slot_types[name], _coerced(current, kind, given)))
+
+    def _coerced(current, kind, given):
+        if kind is array.array:
+            return array.array(current.typecode, given)
+        if kind is numpy.ndarray:
+            return numpy.array(given, dtype=current.dtype)
+        if type(given) is kind:
+            return given
+        try:
+            return kind(given)
+        except TypeError:       # a message: built field by field from a dict
+            sub = kind()
+            fill(sub, given)
+            return sub
+
+    def _nested(rosidl_type, value):
+        """A sequence of messages given as dicts becomes a sequence of messages."""
+        if isinstance(rosidl_type, d.AbstractNestedType) and \
+                isinstance(rosidl_type.value_type, d.NamespacedType):
+            element = _class_of(rosidl_type.value_type)
+            for i, item in enumerate(value):
+                built = element()
+                fill(built, item)
+                value[i] = built
+        return value
 
     fill(msg, values)
     return timestamp_fields

@@ -434,14 +434,13 @@ def _yaml_is_instance(data, data_type, can_be_str):
 
 def _condition(entity):
     from labkit.launch.conditions import IfCondition, UnlessCondition
-    if_cond = entity.get_attr('if', optional=True)
-    unless_cond = entity.get_attr('unless', optional=True)
-    if if_cond is not None and unless_cond is not None:
+    given = {key: entity.get_attr(key, optional=True) for key in ('if', 'unless')}
+    given = {key: value for key, value in given.items() if value is not None}
+    if len(given) == 2:
         raise RuntimeError("if and unless conditions can't be used simultaneously")
-    if if_cond is not None:
-        return {'condition': IfCondition(parse_substitution(str(if_cond)))}
-    if unless_cond is not None:
-        return {'condition': UnlessCondition(parse_substitution(str(unless_cond)))}
+    for key, kind in (('if', IfCondition), ('unless', UnlessCondition)):
+        if key in given:
+            return {'condition': kind(parse_substitution(str(given[key])))}
     return {}
 
 

@@ -147,11 +147,12 @@ class Command(Substitution):
 
     def perform(self, context):
         import shlex
+        mode = perform_substitutions(context, self.on_stderr)
+        if mode not in _ON_STDERR:
+            raise SubstitutionFailure('expected \'on_stderr\' to be one of: ' + ', '.join(
+                f"'{m}'" for m in _ON_STDERR[:-1]) + f" or '{_ON_STDERR[-1]}'")
+        on_stderr = mode
         command_str = perform_substitutions(context, self.command)
-        on_stderr = perform_substitutions(context, self.on_stderr)
-        if on_stderr not in ('fail', 'ignore', 'warn', 'capture'):
-            raise SubstitutionFailure(
-                "expected 'on_stderr' to be one of: 'fail', 'ignore', 'warn' or 'capture'")
         argv = shlex.split(command_str)
         code, out, err = _run_labkit_command(argv)
         if on_stderr == 'capture':
@@ -169,6 +170,9 @@ class Command(Substitution):
             if on_stderr == 'warn':
                 context.launch_service.log_warning(message)
         return out
+
+
+_ON_STDERR = ('fail', 'ignore', 'warn', 'capture')
 
 
 def _run_labkit_command(argv):

@@ -96,10 +96,9 @@ class Buffer(BufferCore, BufferInterface):
 
     async def lookup_transform_full_async(self, target_frame, target_time, source_frame,
                                           source_time, fixed_frame):
-        await self.wait_for_transform_full_async(target_frame, target_time, source_frame,
-                                                 source_time, fixed_frame)
-        return self.lookup_transform_full_core(target_frame, target_time, source_frame,
-                                               source_time, fixed_frame)
+        query = (target_frame, target_time, source_frame, source_time, fixed_frame)
+        await self.wait_for_transform_full_async(*query)
+        return self.lookup_transform_full_core(*query)
 
     def wait_for_transform_async(self, target_frame, source_frame, time):
         return self._future_when(

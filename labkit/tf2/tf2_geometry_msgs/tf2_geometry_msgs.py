@@ -102,11 +102,11 @@ def transform_covariance(cov_in, transform):
 
 
 def do_transform_pose_with_covariance_stamped(pose, transform):
-    res = PoseWithCovarianceStamped()
-    res.pose.pose = do_transform_pose(pose.pose.pose, transform)
-    res.pose.covariance = transform_covariance(pose.pose.covariance, transform)
-    res.header = transform.header
-    return res
+    # the pose moves like a pose, its uncertainty turns with the rotation
+    moved = PoseWithCovarianceStamped(header=transform.header)
+    moved.pose.covariance = transform_covariance(pose.pose.covariance, transform)
+    moved.pose.pose = do_transform_pose(pose.pose.pose, transform)
+    return moved
 
 
 TransformRegistration().add(PointStamped, do_transform_point)
