@@ -33,10 +33,11 @@ def joints_at(t):
 
 
 def base_at(t):
-    """(xyz, yaw) of base_link in odom at t seconds: clockwise around (0, -RADIUS)."""
+    """(xyz, yaw) of base_link in odom at t seconds: counter-clockwise (turning left, so
+    the left wheel runs on the inner circle) around (0, RADIUS), starting at the origin."""
     turned = SPEED * t / RADIUS
-    xyz = (RADIUS * math.sin(turned), -RADIUS + RADIUS * math.cos(turned), WHEEL_RADIUS)
-    return xyz, -turned
+    xyz = (RADIUS * math.sin(turned), RADIUS - RADIUS * math.cos(turned), WHEEL_RADIUS)
+    return xyz, turned
 
 
 def drive_view(seconds=12.0, fps=10):

@@ -31,10 +31,16 @@ def process(path, mappings=None):
             doc = xacro.process_file(str(path), mappings=dict(mappings or {}))
         except Exception as exc:   # xacro raises XacroException, XML errors, NameError ...
             detail = " ".join(str(exc).split()) or type(exc).__name__
-            error = URDFError(f"Error processing xacro file '{path}': {detail}")
+            error = URDFError(f"Error processing xacro file '{_shown(path)}': {_shown(detail)}")
             error.detail = detail
             raise error from None
-    return doc.toprettyxml(indent="  ")
+    # xacro's banner names the file: a bundled package's file as it lies under /opt/ros/humble
+    return doc.toprettyxml(indent="  ").replace(f"from {path} ", f"from {_shown(path)} ", 1)
+
+
+def _shown(text):
+    from labkit.ament import index
+    return index.shown(text)
 
 
 def main(args=None):
@@ -53,7 +59,10 @@ def main(args=None):
     try:
         text = process(files[0], mappings)
     except URDFError as exc:        # the xacro command prints xacro's own message
-        _report(exc.__context__ or exc)
+        report = io.StringIO()
+        with contextlib.redirect_stderr(report):
+            _report(exc.__context__ or exc)
+        sys.stderr.write(_shown(report.getvalue()))
         return 2
     if out:
         with open(out, "w", encoding="utf-8") as handle:

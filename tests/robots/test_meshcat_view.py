@@ -93,8 +93,8 @@ def test_facer_drive_is_an_animation():
     assert "/meshcat/robot/head_link" in clips and "/meshcat/frames/odom" in clips
     keys = clips["/meshcat/robot/base_link"]["tracks"][0]["keys"]
     assert len(keys) == 40
-    x, y, z = keys[-1]["value"]          # on the 0.6 m circle around (0, -0.6), 5 cm up
-    assert math.hypot(x, y + 0.6) == pytest.approx(0.6, abs=1e-5) and z == pytest.approx(0.05)
+    x, y, z = keys[-1]["value"]          # on the 0.6 m circle around (0, 0.6), 5 cm up
+    assert math.hypot(x, y - 0.6) == pytest.approx(0.6, abs=1e-5) and z == pytest.approx(0.05)
     assert len(view.iframe()) < 600_000
 
 
@@ -109,10 +109,10 @@ def test_facer_motion_rolls_without_slipping():
         assert joints["left_wheel_joint"] * facer.WHEEL_RADIUS == pytest.approx(inner)
         assert joints["right_wheel_joint"] * facer.WHEEL_RADIUS == pytest.approx(outer)
         assert -1.5708 <= joints["head_pan"] <= 1.5708 and 0 <= joints["mast_lift"] <= 0.08
-    # the path's heading is the tangent of the circle (clockwise: yaw goes negative)
+    # the heading is the circle's tangent; turning left (yaw grows), the left wheel is inside
     (x0, y0, _), _ = facer.base_at(1.0)
     (x1, y1, _), yaw = facer.base_at(1.001)
-    assert math.atan2(y1 - y0, x1 - x0) == pytest.approx(yaw, abs=1e-3)
+    assert math.atan2(y1 - y0, x1 - x0) == pytest.approx(yaw, abs=1e-3) and yaw > 0
 
 
 def test_view_follows_tf_from_robot_state_publisher():
