@@ -12,11 +12,10 @@ class InvalidLaunchFileError(Exception):
 
 
 def load_python_launch_file_as_module(path):
+    """Any file, whatever its ending, read as Python source (as launch's loader does)."""
+    from importlib.machinery import SourceFileLoader
     name = os.path.basename(path).replace('.', '_')
-    spec = importlib.util.spec_from_file_location(name, path)
-    if spec is None:
-        raise InvalidLaunchFileError(
-            "The launch file may have a syntax error, or its format is unknown")
+    spec = importlib.util.spec_from_loader(name, SourceFileLoader(name, path))
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
@@ -41,10 +40,9 @@ def get_launch_description_from_any_launch_file(path):
         return frontend.get_launch_description_from_frontend_launch_file(path)
     except Exception as exc:      # noqa: BLE001 - reported as launch reports it
         errors = [exc]
-    try:                          # launch then tries the file as Python
-        with open(path, encoding='utf-8') as f:
-            compile(f.read(), path, 'exec')
-    except (SyntaxError, ValueError) as exc:
+    try:                          # launch then tries the file as Python (an empty one is)
+        return get_launch_description_from_python_launch_file(path)
+    except Exception as exc:      # noqa: BLE001 - reported as launch reports it
         errors.append(exc)
     extension = frontend.frontend_format(path) if frontend.is_frontend_file(path) else ''
     raise InvalidLaunchFileError(_load_errors(extension, errors))

@@ -364,42 +364,52 @@ XML_ERRORS = [
 ]
 
 
-@pytest.mark.parametrize('text, errors', XML_ERRORS)
-def test_bad_xml_in_launchs_words(tmp_path, text, errors):
-    path = _write(tmp_path, 'broken.launch.xml', text)
+YAML_ERRORS = [
+    ('launch:\n- node:\n    pkg: turtlesim\n    exec: turtlesim_node\n    nmae: x\n',
+     [" - ValueError: Unexpected key(s) found in `node`: {'nmae'}"]),
+    ('launch:\n- node:\n    pkg: turtlesim\n',
+     [" - AttributeError: Can not find attribute 'exec' in Entity 'node'"]),
+    ('launch:\n- timer:\n    period: 2\n    children:\n    - log: {message: hi}\n',
+     [" - TypeError: Attribute 'period' of Entity 'timer' expected to be of type "
+      "'<class 'float'>', got '<class 'int'>'"]),
+    ('launch:\n- let: {name: x, value: 150}\n',
+     [" - TypeError: Attribute 'value' of Entity 'let' expected to be of type "
+      "'<class 'str'>', got '<class 'int'>'"]),
+    ('launch:\n- frob: {}\n', [' - RuntimeError: Unrecognized entity of the type: frob']),
+]
+
+
+ERRORS = [('xml', t, e) for t, e in XML_ERRORS] + [('yaml', t, e) for t, e in YAML_ERRORS]
+
+
+@pytest.mark.parametrize('ext, text, errors', ERRORS)
+def test_bad_files_in_launchs_words(tmp_path, ext, text, errors):
+    path = _write(tmp_path, f'broken.launch.{ext}', text)
     lines = _lines(labkit.ros2(f'launch {path}'))
     start = lines.index('[ERROR] [launch]: Caught exception in launch (see debug for '
                         'traceback): Caught multiple exceptions when trying to load file of '
-                        'format [xml]:')
+                        f'format [{ext}]:')
     assert lines[start + 1:start + 1 + len(errors)] == errors
     assert lines[start + 1 + len(errors)].startswith(' - SyntaxError: ')    # tried as Python
     assert not any('Traceback' in line or 'File "' in line for line in lines)
 
 
-YAML_ERRORS = [
-    ('launch:\n- node:\n    pkg: turtlesim\n    exec: turtlesim_node\n    nmae: x\n',
-     " - ValueError: Unexpected key(s) found in `node`: {'nmae'}"),
-    ('launch:\n- node:\n    pkg: turtlesim\n',
-     " - AttributeError: Can not find attribute 'exec' in Entity 'node'"),
-    ('launch:\n- timer:\n    period: 2\n    children:\n    - log: {message: hi}\n',
-     " - TypeError: Attribute 'period' of Entity 'timer' expected to be of type "
-     "'<class 'float'>', got '<class 'int'>'"),
-    ('launch:\n- let: {name: x, value: 150}\n',
-     " - TypeError: Attribute 'value' of Entity 'let' expected to be of type "
-     "'<class 'str'>', got '<class 'int'>'"),
-    ('launch:\n- frob: {}\n', ' - RuntimeError: Unrecognized entity of the type: frob'),
-]
-
-
-@pytest.mark.parametrize('text, error', YAML_ERRORS)
-def test_bad_yaml_in_launchs_words(tmp_path, text, error):
-    path = _write(tmp_path, 'broken.launch.yaml', text)
+def test_an_empty_or_unreadable_yaml_file(tmp_path):
+    """launch tries every front-end, then Python: an empty file IS Python, without
+    generate_launch_description()."""
+    path = _write(tmp_path, 'empty.launch.yaml', '')
     lines = _lines(labkit.ros2(f'launch {path}'))
-    start = lines.index('[ERROR] [launch]: Caught exception in launch (see debug for '
-                        'traceback): Caught multiple exceptions when trying to load file of '
-                        'format [yaml]:')
-    assert lines[start + 1] == error
-    assert lines[start + 2].startswith(' - SyntaxError: ')
+    assert lines[-4:] == [
+        ' - InvalidFrontendLaunchFileError: Caught multiple exceptions when trying to load '
+        'file of format [yaml]:',
+        " - TypeError: object of type 'NoneType' has no len()",
+        ' - ParseError: no element found: line 1, column 0',
+        f" - InvalidPythonLaunchFileError: launch file at '{path}' does not contain the "
+        "required function 'generate_launch_description()'"]
+    path = _write(tmp_path, 'bad.launch.yaml', 'launch:\n- node: {pkg: turtlesim\n')
+    lines = _lines(labkit.ros2(f'launch {path}'))
+    assert ' - ParserError: while parsing a flow mapping' in lines
+    assert ' - ParseError: syntax error: line 1, column 0' in lines
 
 
 def test_a_file_of_no_launch_format(tmp_path):
