@@ -135,6 +135,21 @@ class _ClearLaunchConfigurations(Action):
         context.launch_configurations.clear()
 
 
+class ResetLaunchConfigurations(Action):
+    """Forget every launch configuration of this scope, but set the given ones afterwards
+    (their values are read before the forgetting, so `$(var x)` still works)."""
+
+    def __init__(self, launch_configurations=None, **kwargs):
+        super().__init__(**kwargs)
+        self.__configs = launch_configurations
+
+    def execute(self, context):
+        kept = {perform(context, k): perform(context, v)
+                for k, v in (self.__configs or {}).items()}
+        context.launch_configurations.clear()
+        context.launch_configurations.update(kept)
+
+
 class IncludeLaunchDescription(Action):
     """Another launch file's description, with its arguments set first."""
 

@@ -4,7 +4,7 @@ becomes the same launch description a Python launch file builds.
 The tags and attributes are the real ones (launch's and launch_ros's `parse` methods):
 `launch` (root), `arg` (+ `choice`), `let`, `group` (`scoped`, `forwarding`, `keep`),
 `include` (`file`, + `arg`), `log`, `set_env`, `unset_env`, `append_env`, `timer`,
-`shutdown`, `reset_env`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`,
+`shutdown`, `reset` (+ `keep`), `reset_env`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`,
 `respawn`, `respawn_delay`, `shell`, + `env`), `node` (the same but `cmd`, and `pkg`, `exec`,
 `name`, `namespace`, `exec_name`, `args`, `ros_args`, + `param`, `remap`), `push-ros-namespace`
 (also `push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
@@ -510,6 +510,14 @@ def _let(entity):
                                   **_condition(entity))
 
 
+def _keeps(entity):
+    """`<keep name= value=/>` children: the launch configurations a group or a reset sets."""
+    keeps = entity.get_attr('keep', data_type=ENTITIES, optional=True)
+    if keeps is None:
+        return {}
+    return {'launch_configurations': {tuple(k): v for k, v in _pairs(keeps, 'name', 'value')}}
+
+
 def _group(entity):
     from labkit.launch.actions import GroupAction
     kwargs = _condition(entity)
@@ -517,10 +525,7 @@ def _group(entity):
         value = entity.get_attr(flag, data_type=bool, optional=True, can_be_str=False)
         if value is not None:
             kwargs[flag] = value
-    keeps = entity.get_attr('keep', data_type=ENTITIES, optional=True)
-    if keeps is not None:
-        kwargs['launch_configurations'] = {tuple(k): v for k, v in
-                                           _pairs(keeps, 'name', 'value')}
+    kwargs.update(_keeps(entity))
     actions = [parse_action(child) for child in entity.children if child.type_name != 'keep']
     return GroupAction(actions, **kwargs)
 
@@ -716,6 +721,13 @@ def _set_remap(entity):
     return SetRemap(_text(entity, 'from'), _text(entity, 'to'), **_condition(entity))
 
 
+def _reset(entity):
+    from labkit.launch.actions import ResetLaunchConfigurations
+    kwargs = _condition(entity)
+    kwargs.update(_keeps(entity))
+    return ResetLaunchConfigurations(**kwargs)
+
+
 def _reset_env(entity):
     from labkit.launch.actions import ResetEnvironment
     return ResetEnvironment(**_condition(entity))
@@ -724,7 +736,7 @@ def _reset_env(entity):
 ACTIONS = {
     'arg': _arg, 'let': _let, 'group': _group, 'include': _include, 'log': _log,
     'set_env': _set_env, 'unset_env': _unset_env, 'append_env': _append_env,
-    'reset_env': _reset_env,
+    'reset_env': _reset_env, 'reset': _reset,
     'timer': _timer, 'shutdown': _shutdown, 'executable': _executable, 'node': _node,
     'push-ros-namespace': _push_ros_namespace, 'push_ros_namespace': _push_ros_namespace,
     'set_parameter': _set_parameter, 'set_remap': _set_remap,

@@ -420,6 +420,23 @@ def test_a_file_of_no_launch_format(tmp_path):
                          'is unknown')
 
 
+def test_reset_forgets_launch_configurations_but_the_kept_ones(tmp_path):
+    path = _write(tmp_path, 'reset.launch.yaml', '''\
+        launch:
+        - let: {name: a, value: one}
+        - let: {name: b, value: two}
+        - reset:
+            keep:
+            - {name: c, value: $(var a)}
+        - log: {message: "a=$(var a gone) b=$(var b gone) c=$(var c)"}
+        - reset: {}
+        - log: {message: "c=$(var c gone)"}
+        ''')
+    lines = _lines(labkit.ros2(f'launch {path}'))
+    assert '[INFO] [launch.user]: a=gone b=gone c=one' in lines
+    assert '[INFO] [launch.user]: c=gone' in lines
+
+
 def test_executable_and_node_take_every_process_attribute(tmp_path):
     """`<node>` has all of `<executable>`'s attributes but `cmd` (launch_ros's Node.parse);
     none of them is 'unexpected'."""
