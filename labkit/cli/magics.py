@@ -139,7 +139,6 @@ def _execution_count():
 def _redirect_job(process, target, mode):
     """`%ros2 topic echo /x > file`: the job's later stdout goes on to the file, as in a
     shell; its stderr still shows in the notebook."""
-    from labkit import process as processes
     out = open(target, mode)
 
     def sink(name, text):
@@ -147,10 +146,7 @@ def _redirect_job(process, target, mode):
             out.write(text)
             out.flush()
             return
-        stream = processes._original.get(name)
-        if stream is not None:
-            stream.write(text)
-            stream.flush()
+        process.echo_text(name, text)   # shown as its other lines are (whole lines)
 
     process.sink = sink
 

@@ -147,3 +147,15 @@ def test_a_job_handle_stops_its_job_and_shows_nothing_extra_in_its_own_cell():
     fmt = ip.display_formatter
     assert fmt.format(handle) == ({}, {})   # shown through _ipython_display_ (prints line)
     assert magics.JobHandle is type(handle)
+
+
+def test_a_redirected_job_writes_stdout_to_the_file_and_stderr_whole_lines(terminal, tmp_path):
+    from labkit.cli import magics
+    _, err = terminal()
+    target = tmp_path / "log.txt"
+    magics.ros2_magic(f"run demo_nodes_py talker > {target}")
+    labkit.sleep(2.5)
+    assert err.pieces and all(p.endswith("\n") for p in err.pieces)
+    assert "Publishing: \"Hello World: 1\"" in err.getvalue()
+    assert target.read_text() == ""         # the talker logs to stderr; stdout stays empty
+    labkit.reset()
