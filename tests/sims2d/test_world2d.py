@@ -197,3 +197,47 @@ def test_meshcat_scan_command():
     back = np.frombuffer(position["array"].data, dtype=np.float32).reshape(-1, 3)
     assert np.allclose(back, points)
     assert command["object"]["object"]["type"] == "Points"
+
+
+# ---------------------------------------------------------------- visualize_lidar.sdf's topics
+FORTRESS_TOPICS = [      # `ign topic -l` for visualize_lidar.sdf (Fortress), less the GUI's own
+    "/clock", "/gazebo/resource_paths", "/lidar", "/lidar/points", "/lidar2", "/lidar2/points",
+    "/model/vehicle_blue/odometry", "/model/vehicle_blue/tf", "/stats",
+    "/world/visualize_lidar_world/clock", "/world/visualize_lidar_world/dynamic_pose/info",
+    "/world/visualize_lidar_world/pose/info", "/world/visualize_lidar_world/scene/deletion",
+    "/world/visualize_lidar_world/scene/info", "/world/visualize_lidar_world/state",
+    "/world/visualize_lidar_world/stats"]
+
+
+def test_topic_list_is_the_advertised_topics_of_visualize_lidar():
+    """Both lidars (model_with_lidar's /lidar, vehicle_blue's /lidar2) and their /points;
+    cmd_vel, only subscribed by DiffDrive, appears once a ROS->GZ bridge advertises it."""
+    t = Transport()
+    sim = Simulation(w2d.load("visualize_lidar.sdf"), transport=t)
+    assert t.topics() == FORTRESS_TOPICS
+    assert t.info("/model/vehicle_blue/cmd_vel") == ("ignition.msgs.Twist", 0, 1)
+    publish = t.advertise("/model/vehicle_blue/cmd_vel", "ignition.msgs.Twist")
+    assert t.topics() == sorted(FORTRESS_TOPICS + ["/model/vehicle_blue/cmd_vel"])
+    t.unadvertise(publish)
+    sim.close()
+    assert t.topics() == []
+
+
+def test_model_with_lidar_sees_vehicle_blue_coming():
+    t = Transport()
+    world = w2d.load("visualize_lidar.sdf")
+    assert [s.name for s in world.sensors] == ["model_with_lidar"]
+    sim = Simulation(world, transport=t)
+    scans = []
+    t.subscribe("/lidar", "ignition.msgs.LaserScan", scans.append)
+    sim.advance(0.1)
+    scan = scans[-1]
+    assert scan["header"]["data"][0]["value"] == ["model_with_lidar::link::gpu_lidar"]
+    assert (scan["count"], scan["vertical_count"], len(scan["ranges"])) == (640, 16, 640 * 16)
+    middle = scan["ranges"][319:321]          # straight ahead: along -x, at y = -0.05
+    # vehicle_blue's chassis front: -4 + (-0.151427 + 2.01142 / 2) = -3.1457 m
+    assert middle == pytest.approx([3.95 + 3.1457] * 2, abs=0.02)
+    sim.vehicle().on_cmd_vel({"linear": {"x": 1.0}, "angular": {"z": 0.0}})
+    sim.advance(1.0)
+    assert scans[-1]["ranges"][319:321] == pytest.approx([3.95 + 3.1457 - 1.0] * 2, abs=0.03)
+    sim.close()

@@ -7,7 +7,11 @@ What it does, the way gz-sim's DiffDrive system and gpu_lidar sensor do it:
 - publishes /model/<name>/odometry (ignition.msgs.Odometry, pose relative to
   where it started, frame <name>/odom -> <name>/chassis) and
   /model/<name>/tf (ignition.msgs.Pose_V) at odom_publish_frequency;
-- publishes the lidar's ignition.msgs.LaserScan on its topic at update_rate;
+- publishes the lidar's ignition.msgs.LaserScan on its topic at update_rate, for
+  the vehicle's lidar and for every static sensor model (model_with_lidar, which
+  sees the vehicles' chassis too); each lidar also advertises <topic>/points
+  (ignition.msgs.PointCloudPacked) as gz-sensors does, but labkit does not fill
+  point clouds (nothing is published there);
 - publishes /clock and /world/<world>/clock (sim time, which starts at 0).
 All on labkit's Gazebo-transport stand-in (transport.py), not on ROS topics.
 """
@@ -18,7 +22,7 @@ from collections import deque
 import numpy as np
 
 from . import transport as gz
-from .world import scan_ranges
+from .world import Obstacle, scan_ranges
 
 STEP_NS = 10_000_000              # 10 ms physics step
 HISTORY = 600                     # scans kept for the replay GIF (60 s at 10 Hz)
@@ -140,15 +144,35 @@ class Simulation:
             adv(self.lidar_topic(vehicle), "ignition.msgs.LaserScan")
             self._subs.append(t.subscribe(f"/model/{name}/cmd_vel", "ignition.msgs.Twist",
                                           vehicle.on_cmd_vel))
+            adv(self.lidar_topic(vehicle) + "/points", "ignition.msgs.PointCloudPacked")
             lidar = vehicle.config.lidar
             self._next[(name, "scan")] = _period_ns(lidar.update_rate)
             self._next[(name, "odom")] = _period_ns(vehicle.config.odom_publish_frequency)
+        for sensor in self.world.sensors:
+            topic = self.lidar_topic(sensor)
+            adv(topic, "ignition.msgs.LaserScan")
+            adv(topic + "/points", "ignition.msgs.PointCloudPacked")
+            self._next[(sensor.name, "scan")] = _period_ns(sensor.lidar.update_rate)
         self._next["clock"] = 0
 
     @staticmethod
-    def lidar_topic(vehicle):
-        topic = vehicle.config.lidar.topic
-        return topic if topic.startswith("/") else "/" + topic
+    def lidar_topic(model):
+        """A vehicle's or a sensor model's lidar topic, absolute."""
+        lidar = model.config.lidar if hasattr(model, "config") else model.lidar
+        return lidar.topic if lidar.topic.startswith("/") else "/" + lidar.topic
+
+    def _sensor_view(self, sensor):
+        """The world as a static sensor sees it: without its own box, with each
+        vehicle's chassis as a box where the vehicle is now."""
+        import dataclasses
+        seen = [o for o in self.world.obstacles if o.name != sensor.name]
+        for vehicle in self.vehicles:
+            x, y, yaw = vehicle.pose
+            (lx, ly), (ox, oy) = vehicle.config.chassis_size, vehicle.config.chassis_offset
+            c, s = math.cos(yaw), math.sin(yaw)
+            seen.append(Obstacle(name=vehicle.name, type="box", x=x + c * ox - s * oy,
+                                 y=y + s * ox + c * oy, yaw=yaw, size=(lx, ly)))
+        return dataclasses.replace(self.world, obstacles=seen)
 
     def close(self):
         for handle in self._subs:
@@ -207,15 +231,25 @@ class Simulation:
                 self._pubs[f"/model/{name}/odometry"](odom)
                 pose = dict(odom["pose"], header=odom["header"])
                 self._pubs[f"/model/{name}/tf"]({"pose": [pose]})
+        for sensor in self.world.sensors:
+            if self._due((sensor.name, "scan"), _period_ns(sensor.lidar.update_rate)):
+                ranges = scan_ranges(self._sensor_view(sensor), sensor.lidar, sensor.pose)
+                self._pubs[self.lidar_topic(sensor)](self._laser_scan_of(
+                    sensor.name, sensor.lidar, sensor.pose, np.tile(ranges, sensor.vertical_count),
+                    t, vertical_count=sensor.vertical_count))
         if scans:
             self.history.append((t, [(v.pose, v.ranges) for v in self.vehicles]))
 
     # ------------------------------------------------------------ messages (gz side)
     def _laser_scan(self, vehicle, t):
-        lidar = vehicle.config.lidar
-        frame = f"{vehicle.name}::{lidar.link}::{lidar.sensor}"
+        return self._laser_scan_of(vehicle.name, vehicle.config.lidar, vehicle.pose,
+                                   vehicle.ranges, t)
+
+    @staticmethod
+    def _laser_scan_of(model, lidar, pose, ranges, t, vertical_count=1):
+        frame = f"{model}::{lidar.link}::{lidar.sensor}"
         count = lidar.samples
-        x, y, yaw = vehicle.pose
+        x, y, yaw = pose
         return {
             "header": gz.header(t, frame_id=frame, seq=str(int(t * lidar.update_rate))),
             "frame": frame,
@@ -223,10 +257,12 @@ class Simulation:
             "angle_min": lidar.min_angle, "angle_max": lidar.max_angle,
             "angle_step": lidar.angle_step, "range_min": lidar.range_min,
             "range_max": lidar.range_max, "count": count,
-            "vertical_angle_min": 0.0, "vertical_angle_max": 0.0, "vertical_angle_step": 0.0,
-            "vertical_count": 1,
-            "ranges": vehicle.ranges.astype(np.float64),
-            "intensities": np.zeros(count),
+            "vertical_angle_min": -0.261799 if vertical_count > 1 else 0.0,
+            "vertical_angle_max": 0.261799 if vertical_count > 1 else 0.0,
+            "vertical_angle_step": 0.523598 / (vertical_count - 1) if vertical_count > 1 else 0.0,
+            "vertical_count": vertical_count,
+            "ranges": np.asarray(ranges, dtype=np.float64),
+            "intensities": np.zeros(len(ranges)),
         }
 
     @staticmethod

@@ -70,9 +70,11 @@ class Transport:
         return bool(topic and topic.subscribers)
 
     def topics(self):
-        """Sorted names, as `ign topic -l` lists them."""
+        """Sorted names, as `ign topic -l` lists them: topics someone advertises.
+        gz-transport's discovery knows publishers only, so a topic that is merely
+        subscribed (DiffDrive's cmd_vel before a bridge publishes to it) is not listed."""
         with self._lock:
-            return sorted(self._topics)
+            return sorted(name for name, topic in self._topics.items() if topic.publishers > 0)
 
     def info(self, name):
         """(type, publishers, subscribers) or None."""

@@ -78,11 +78,21 @@ class VehicleConfig:
 
 
 @dataclass
+class SensorModel:
+    """A static model carrying a lidar (visualize_lidar.sdf's model_with_lidar)."""
+    name: str = "model_with_lidar"
+    pose: tuple = (0.0, 0.0, 0.0)            # x, y, yaw of the sensor
+    vertical_count: int = 1                  # layers of a 3D lidar (the 2D scan is each layer)
+    lidar: LidarConfig = field(default_factory=LidarConfig)
+
+
+@dataclass
 class World:
     name: str = "default"
     ground: tuple = (20.0, 20.0)
     obstacles: list = field(default_factory=list)
     vehicles: list = field(default_factory=list)
+    sensors: list = field(default_factory=list)
     source: str = ""
 
     # ------------------------------------------------------------ geometry caches
@@ -205,11 +215,20 @@ def _vehicle(name, spec):
         lidar=LidarConfig(**lidar))
 
 
+def _sensor(name, spec):
+    pose = list(spec.get("pose", [0.0, 0.0, 0.0])) + [0.0, 0.0, 0.0]
+    lidar = dict(spec.get("lidar", {}))
+    return SensorModel(name=name, pose=(float(pose[0]), float(pose[1]), float(pose[2])),
+                       vertical_count=int(spec.get("vertical_samples", 1)),
+                       lidar=LidarConfig(**lidar))
+
+
 def from_dict(data, source=""):
     world = World(name=str(data.get("world", "default")),
                   ground=tuple(data.get("ground", (20.0, 20.0))), source=source)
     world.obstacles = [_obstacle(o) for o in data.get("obstacles", [])]
     world.vehicles = [_vehicle(n, v) for n, v in (data.get("models") or {}).items()]
+    world.sensors = [_sensor(n, v) for n, v in (data.get("sensors") or {}).items()]
     return world
 
 
