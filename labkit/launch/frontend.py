@@ -778,6 +778,8 @@ def load(path):
     """The root entity of an XML or YAML launch file, as launch.frontend.Parser.load: the
     parsers that claim the file's ending first, then every other one; when none can read
     it, one error that lists what each said."""
+    with open(path, encoding='utf-8'):   # a missing file is that error alone, not a parser's
+        pass
     claimed = [load for load, endings in _parsers() if _ends_with(path, endings)]
     order = claimed + [load for load, _ in _parsers() if load not in claimed]
     errors = []

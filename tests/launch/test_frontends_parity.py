@@ -412,6 +412,15 @@ def test_an_empty_or_unreadable_yaml_file(tmp_path):
     assert ' - ParseError: syntax error: line 1, column 0' in lines
 
 
+def test_including_a_missing_file(tmp_path):
+    path = _write(tmp_path, 'top.launch.xml', '<launch><include file="$(dirname)/no.xml"/>'
+                                              '</launch>')
+    missing = f" - FileNotFoundError: [Errno 2] No such file or directory: '{tmp_path}/no.xml'"
+    assert _lines(labkit.ros2(f'launch {path}'))[-3:] == [
+        '[ERROR] [launch]: Caught exception in launch (see debug for traceback): Caught '
+        'multiple exceptions when trying to load file of format [xml]:', missing, missing]
+
+
 def test_a_file_of_no_launch_format(tmp_path):
     path = _write(tmp_path, 'notes.txt', 'just some words: here\n')
     lines = _lines(labkit.ros2(f'launch {path}'))
