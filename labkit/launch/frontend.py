@@ -177,7 +177,7 @@ def instantiate_substitution(name, args):
         return cls(args[0])
     if name == 'exec-in-pkg':
         if len(args) != 2:
-            raise TypeError('exec-in-pkg substitution expects 2 arguments')
+            raise AttributeError('exec-in-package substitution expects 2 arguments')
         return rs.ExecutableInPackage(executable=args[0], package=args[1])
     raise RuntimeError('Unknown substitution: {}'.format(name))
 

@@ -346,6 +346,10 @@ XML_ERRORS = [
     ('<launch>\n  <include>\n    <arg name="a" value="b"/>\n  </include>\n</launch>\n',
      [" - AttributeError: Attribute 'file' of type '<class 'str'>' not found in Entity "
       "'include'"]),
+    ('<launch>\n  <log message="$(exec-in-pkg mimic)"/>\n</launch>\n',
+     [' - AttributeError: exec-in-package substitution expects 2 arguments']),
+    ('<launch>\n  <log message="$(dirname x)"/>\n</launch>\n',
+     [" - TypeError: dirname substitution doesn't expect arguments"]),
     ('<launch>\n  <frob/>\n</launch>\n',
      [' - RuntimeError: Unrecognized entity of the type: frob']),
     ('<launch>\n  <log message="$(nope x)"/>\n</launch>\n',
