@@ -813,6 +813,16 @@ def get_launch_description_from_frontend_launch_file(path):
     return parse_description(load(path))
 
 
+def xml_launch_description(path):
+    """launch_xml's parser alone (XMLLaunchDescriptionSource): its error is its own."""
+    return parse_description(_load_xml(path))
+
+
+def yaml_launch_description(path):
+    """launch_yaml's parser alone (YAMLLaunchDescriptionSource)."""
+    return parse_description(_load_yaml(path))
+
+
 def frontend_format(path):
     """'xml' / 'yaml' (the extension launch names in its errors)."""
     name = os.path.basename(path)

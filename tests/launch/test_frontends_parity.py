@@ -585,3 +585,22 @@ def test_executables_timer_and_eval_condition_as_in_the_substitutions_tutorial(t
     labkit.ros2(f'launch {colors}')                     # really defaults to False: no timer
     labkit.sleep(3.0)
     assert labkit.ros2('param get /pond1/sim background_r').stdout == 'Integer value is: 10\n'
+
+
+def test_xml_source_reads_xml_only(pond):
+    """XMLLaunchDescriptionSource is launch_xml's parser alone: a YAML file is its
+    ParseError (AnyLaunchDescriptionSource would have tried YAML too)."""
+    path = _write(pond, 'wrong.launch.py', f'''\
+        from launch import LaunchDescription
+        from launch.actions import IncludeLaunchDescription
+        from launch_xml.launch_description_sources import XMLLaunchDescriptionSource
+
+
+        def generate_launch_description():
+            return LaunchDescription([IncludeLaunchDescription(
+                XMLLaunchDescriptionSource({str(pond / 'mimic.launch.yaml')!r}),
+                launch_arguments=[('src', '/x')])])
+        ''')
+    assert _lines(labkit.ros2(f'launch {path}'))[-1] == (
+        '[ERROR] [launch]: Caught exception in launch (see debug for traceback): '
+        'syntax error: line 1, column 0')
