@@ -25,6 +25,7 @@ __all__ = ["connect", "disconnect", "current", "is_connected", "ConfigError", "C
 
 _bridge = None
 _lock = threading.Lock()
+_saved_domain = []       # ROS_DOMAIN_ID before connect() set it
 
 
 class ConnectError(RuntimeError):
@@ -77,6 +78,11 @@ def connect(domain_id=None, localhost_only=None):
         except Exception as exc:
             raise ConnectError(f"labkit.connect(): could not create a DDS participant on "
                                f"domain {domain}: {exc}") from None
+        # the process now lives on that domain, like `export ROS_DOMAIN_ID=...`: nodes
+        # and ros2 verbs started from here on join it (disconnect() puts it back)
+        if not _saved_domain:         # a reconnect keeps the value from before the first
+            _saved_domain.append(os.environ.get("ROS_DOMAIN_ID"))
+        os.environ["ROS_DOMAIN_ID"] = str(domain)
     return _bridge
 
 
@@ -85,6 +91,12 @@ def disconnect():
     global _bridge
     with _lock:
         b, _bridge = _bridge, None
+        if _saved_domain:
+            value = _saved_domain.pop()
+            if value is None:
+                os.environ.pop("ROS_DOMAIN_ID", None)
+            else:
+                os.environ["ROS_DOMAIN_ID"] = value
     if b is not None:
         b.close()
 
