@@ -10,6 +10,15 @@ import sys
 # what ros2doctor prints as `<file>: <line>: UserWarning: <msg>`: the path below the
 # package root, not this machine's site-packages (the same on every machine)
 _ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+# where Humble's ros2doctor checks live (apt's ros-humble-ros2doctor, Python 3.10)
+HUMBLE_API = '/opt/ros/humble/lib/python3.10/site-packages/ros2doctor/api'
+# the environment /opt/ros/humble/setup.bash sets: labkit's underlay counts as sourced
+UNDERLAY_DISTRO = 'humble'
+
+
+def ros_distro():
+    """ROS_DISTRO as a terminal that sourced the underlay has it ('' when emptied)."""
+    return os.environ.get('ROS_DISTRO', UNDERLAY_DISTRO).strip()
 
 
 class Report:
@@ -44,15 +53,23 @@ class Doctor:
         self.node = node
         self._eprint = eprint
 
-    def warn(self, msg, _depth=1):
+    def warn(self, msg, at=None, _depth=1):
+        """Print one warning line. `at` = (module, line) of the ros2doctor code that
+        says the same in Humble: the line then names that file, where a Humble
+        install has it, as the real one does. labkit's own checks name their file
+        below the package root (the same on every machine)."""
+        if at is not None:
+            module, line = at
+            self._eprint(f'{HUMBLE_API}/{module}.py: {line}: UserWarning: {msg}')
+            return
         # ros2doctor's custom warning format, located at the caller like stacklevel=2;
         # printed every time (Python's warnings module would show a repeat only once)
         frame = sys._getframe(_depth)
         path = os.path.relpath(frame.f_code.co_filename, _ROOT).replace(os.sep, '/')
         self._eprint(f'{path}: {frame.f_lineno}: UserWarning: {msg}')
 
-    def error(self, msg):
-        self.warn(f'ERROR: {msg}', _depth=2)
+    def error(self, msg, at=None):
+        self.warn(f'ERROR: {msg}', at=at, _depth=2)
 
     def topic_names(self, skip_topics=()):
         return [name for name, _ in self.node.get_topic_names_and_types()

@@ -1,34 +1,18 @@
 """The network check and NETWORK CONFIGURATION, honestly: labkit's graph lives in one
 Python process, so no interface carries ROS traffic; its few servers (widgets, the
-3D viewer) bind 127.0.0.1. What can still be wrong is the ROS_DOMAIN_ID setting."""
+3D viewer) bind 127.0.0.1. Humble's check looks at the machine's interfaces (loopback,
+multicast); it does not look at ROS_DOMAIN_ID, and neither does this one: a bad domain
+id makes rcl refuse to start a node, not ros2doctor complain."""
 import os
 
 from labkit.doctor.api import Report, Result
-
-# rmw's limit for a domain id (ports beyond it do not exist)
-MAX_DOMAIN_ID = 232
-
-
-def domain_id_problem():
-    """None, or why ROS_DOMAIN_ID is unusable (rcl refuses such a value)."""
-    value = os.environ.get('ROS_DOMAIN_ID', '').strip()
-    if not value:
-        return None
-    if not value.isdigit() or int(value) > MAX_DOMAIN_ID:
-        return f'ROS_DOMAIN_ID is {value!r}: it must be an integer from 0 to {MAX_DOMAIN_ID}.'
-    return None
 
 
 class NetworkCheck:
     category = 'network'
 
     def check(self, doctor):
-        result = Result()
-        problem = domain_id_problem()
-        if problem:
-            doctor.error(problem)
-            result.add_error()
-        return result
+        return Result()         # nothing of the machine's network is in play
 
 
 class NetworkReport:

@@ -33,7 +33,13 @@ class PackageCheck:
     category = 'package'
 
     def check(self, doctor):
+        from labkit.doctor.platform import distro_or_complain
         result = Result()
+        if distro_or_complain(doctor, 'package', (40, 52)) is None:
+            # Humble compares with the distribution's release versions: none to compare with
+            doctor.error('distro packages info is not found.', at=('package', 150))
+            result.add_error()
+            return result
         try:
             wanted = requirements()
         except metadata.PackageNotFoundError:
@@ -56,7 +62,10 @@ class PackageReport:
     category = 'package'
 
     def report(self, doctor):
+        from labkit.doctor.platform import distro_or_complain
         report = Report('PACKAGE VERSIONS')
+        if distro_or_complain(doctor, 'package', (40, 52)) is None:
+            return report                   # Humble prints the section empty
         report.add_to_report(DISTRIBUTION, f'local={local_version(DISTRIBUTION)}')
         try:
             wanted = requirements()

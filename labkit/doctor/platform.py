@@ -5,11 +5,10 @@ machine-specific lines of `ros2 doctor --report`). ROS 2 INFORMATION is the
 distribution labkit emulates, as the rosdistro index describes Humble (kept
 here: doctor never goes online).
 """
-import os
 import platform
 import sys
 
-from labkit.doctor.api import Report, Result
+from labkit.doctor.api import Report, Result, ros_distro
 
 DISTRO = {
     'distribution name': 'humble',
@@ -20,13 +19,35 @@ DISTRO = {
 MIN_PYTHON = (3, 10)
 
 
+# the ROS 2 distributions of the rosdistro index (Humble's ros2doctor looks the name up there)
+KNOWN_DISTROS = ('ardent', 'bouncy', 'crystal', 'dashing', 'eloquent', 'foxy', 'galactic',
+                 'humble', 'iron', 'jazzy', 'kilted', 'rolling')
+
+
+def distro_or_complain(doctor, module, lines):
+    """The ROS_DISTRO name, or None after Humble's complaint (ros2doctor's helpers in
+    platform.py and package.py): unset/empty is an error, an unknown name a warning."""
+    name = ros_distro().lower()
+    if not name:
+        doctor.error('ROS_DISTRO is not set.', at=(module, lines[0]))
+        return None
+    if name not in KNOWN_DISTROS:
+        doctor.warn(f'Distribution name {name} is not found', at=(module, lines[1]))
+        return None
+    return name
+
+
 class PlatformCheck:
     category = 'platform'
 
     def check(self, doctor):
         result = Result()
-        distro = os.environ.get('ROS_DISTRO', '').strip().lower()
-        if distro and distro != DISTRO['distribution name']:
+        distro = distro_or_complain(doctor, 'platform', (37, 49))
+        if distro is None:
+            doctor.error('Missing rosdistro info. Unable to check platform.', at=('platform', 69))
+            result.add_error()
+            return result
+        if distro != DISTRO['distribution name']:
             # a sourced ROS of another distribution: labkit still behaves like Humble
             doctor.warn(f'ROS_DISTRO is {distro}, but labkit emulates '
                         f"{DISTRO['distribution name']}.")
@@ -60,6 +81,8 @@ class RosdistroReport:
 
     def report(self, doctor):
         report = Report('ROS 2 INFORMATION')
+        if distro_or_complain(doctor, 'platform', (37, 49)) is None:
+            return report                   # Humble prints the section empty
         for key, value in DISTRO.items():
             report.add_to_report(key, value)
         return report

@@ -33,11 +33,11 @@ class QoSCompatibilityCheck:
             compatibility, reason = qos_check_compatible(pub.qos_profile, sub.qos_profile)
             if compatibility == QoSCompatibility.WARNING:
                 doctor.warn(f"QoS compatibility warning found on topic '{topic}': "
-                            f'{_strip_level(reason)}')
+                            f'{_strip_level(reason)}', at=('qos_compatibility', 47))
                 result.add_warning()
             elif compatibility == QoSCompatibility.ERROR:
                 doctor.error(f"QoS compatibility error found on topic '{topic}': "
-                             f'{_strip_level(reason)}')
+                             f'{_strip_level(reason)}', at=('qos_compatibility', 51))
                 result.add_error()
         return result
 

@@ -14,10 +14,10 @@ class TopicCheck:
             pub_count = node.count_publishers(topic)
             sub_count = node.count_subscribers(topic)
             if pub_count > 0 and sub_count == 0:
-                doctor.warn(f'Publisher without subscriber detected on {topic}.')
+                doctor.warn(f'Publisher without subscriber detected on {topic}.', at=('topic', 42))
                 result.add_warning()
             elif sub_count > 0 and pub_count == 0:
-                doctor.warn(f'Subscriber without publisher detected on {topic}.')
+                doctor.warn(f'Subscriber without publisher detected on {topic}.', at=('topic', 45))
                 result.add_warning()
         return result
 
