@@ -3,11 +3,11 @@ becomes the same launch description a Python launch file builds.
 
 The tags and attributes are the real ones (launch's and launch_ros's `parse` methods):
 `launch` (root), `arg` (+ `choice`), `let`, `group` (`scoped`, `forwarding`, `keep`),
-`include` (`file`, + `arg`), `log`, `set_env`, `unset_env`, `append_env`, `timer`,
-`shutdown`, `reset` (+ `keep`), `reset_env`, `executable` (`cmd`, `cwd`, `name`, `launch-prefix`, `output`,
-`respawn`, `respawn_delay`, `shell`, + `env`), `node` (the same but `cmd`, and `pkg`, `exec`,
-`name`, `namespace`, `exec_name`, `args`, `ros_args`, + `param`, `remap`), `push-ros-namespace`
-(also `push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
+`include` (`file`, + `arg`), `log`, `set_env`, `unset_env`, `append_env`, `reset_env`,
+`timer`, `shutdown`, `reset` (+ `keep`), `executable` (`cmd`, `cwd`, `name`, `launch-prefix`,
+`output`, `respawn`, `respawn_delay`, `shell`, + `env`), `node` (the same but `cmd`, and
+`pkg`, `exec`, `name`, `namespace`, `exec_name`, `args`, `ros_args`, + `param`, `remap`),
+`push-ros-namespace` (also `push_ros_namespace`), `set_parameter`, `set_remap`; every action takes `if` / `unless`.
 As in Humble, an attribute, nested tag or YAML key that the tag's parser did not read is an
 error ("Unexpected attribute(s) found in `node`: {'nmae'}").
 Substitutions are written `$(name arg ...)`: var, env, eval, anon, not, and, or, command,
@@ -32,7 +32,7 @@ ENTITIES = 'entities'       # get_attr(data_type=ENTITIES): nested entities of t
 
 
 def is_frontend_file(path):
-    return path.endswith(tuple('.' + e for e in XML_EXTENSIONS + YAML_EXTENSIONS))
+    return _ends_with(path, XML_EXTENSIONS + YAML_EXTENSIONS)
 
 
 # ------------------------------------------------------------------ substitutions
@@ -221,13 +221,11 @@ def list_of(scalar):
 
 
 def _is_list_type(data_type):
-    return data_type is list or isinstance(data_type, tuple)
+    return isinstance(data_type, tuple)
 
 
 def _type_text(data_type):
     """How launch's errors name a type: "<class 'str'>", "typing.List[int]"."""
-    if data_type is list:
-        return 'typing.List'
     if isinstance(data_type, tuple):
         return 'typing.List[{}]'.format(data_type[1].__name__)
     return str(data_type)
@@ -255,10 +253,8 @@ def _coerce(text, data_type, can_be_str=True):
     if data_type is None:
         return _yaml_value(text, can_be_str, f"Failed to convert '{text}' using yaml rules")
     if _is_list_type(data_type):
-        scalar = data_type[1] if isinstance(data_type, tuple) else None
-        valid = (str,) if can_be_str else ()
-        valid += (scalar,) if scalar else (bool, int, float, str)
-        wanted = f"Cannot convert value '{text}' to a list of '{valid if len(valid) > 1 else valid[0]}'"
+        valid = (str, data_type[1]) if can_be_str else data_type[1]
+        wanted = f"Cannot convert value '{text}' to a list of '{valid}'"
         value = _yaml_value(text, can_be_str, wanted)
         if not isinstance(value, list) or not all(isinstance(v, valid) for v in value):
             raise ValueError(wanted)
@@ -334,7 +330,7 @@ class XmlEntity:
             if data_type is not None and not _is_list_type(data_type):
                 raise TypeError(f"Cannot convert input '{value.split(separator)}' of type "
                                 f"'{list}' to '{data_type}'")
-            scalar = data_type[1] if isinstance(data_type, tuple) else None
+            scalar = data_type[1] if data_type is not None else None
             return [_coerce(item, scalar, can_be_str) for item in value.split(separator)]
         except ValueError:
             raise TypeError("Attribute '{}' of Entity '{}' expected to be of type '{}'."
@@ -424,8 +420,7 @@ def _yaml_is_instance(data, data_type, can_be_str):
             return False
         return all(isinstance(v, (member, str) if can_be_str else member) for v in data)
     if _is_list_type(data_type):
-        scalar = data_type[1] if isinstance(data_type, tuple) else object
-        wanted = (str, scalar) if can_be_str else scalar
+        wanted = (str, data_type[1]) if can_be_str else data_type[1]
         return isinstance(data, list) and all(isinstance(v, wanted) for v in data)
     return isinstance(data, (str, data_type) if can_be_str else data_type)
 

@@ -249,7 +249,8 @@ SUBSTITUTIONS = '''\
       <log message="share=$(find-pkg-share turtlesim)"/>
       <log message="prefix=$(find-pkg-prefix turtlesim)"/>
       <log message="exec=$(exec-in-pkg turtlesim_node turtlesim)"/>
-      <log message="bool=$(not $(eval '2 > 1')) $(and true $(var flag true)) $(or $(var flag) true)"/>
+      <log message="bool=$(not $(eval '2 > 1')) $(and true $(var flag true))"/>
+      <log message="or=$(or $(var flag) true)"/>
       <log message="escaped=\\$(var who)"/>
     </launch>
     '''
@@ -268,7 +269,7 @@ def _as_yaml(xml_text):
 
 @pytest.mark.parametrize('ext', ['xml', 'yaml'])
 def test_every_substitution(tmp_path, ext):
-    from ament_index_python.packages import get_package_prefix, get_package_share_directory
+    from labkit.ament.index import get_package_prefix, get_package_share_directory
     text = SUBSTITUTIONS if ext == 'xml' else _as_yaml(SUBSTITUTIONS)
     path = _write(tmp_path, f'subs.launch.{ext}', text)
     job = labkit.ros2(f'launch {path} who:=leo flag:=false')
@@ -286,7 +287,8 @@ def test_every_substitution(tmp_path, ext):
         'share': get_package_share_directory('turtlesim'),
         'prefix': get_package_prefix('turtlesim'),
         'exec': '/opt/ros/humble/lib/turtlesim/turtlesim_node',
-        'bool': 'false false true',
+        'bool': 'false false',
+        'or': 'true',
         'escaped': '$(var who)',
     }
 
