@@ -24,9 +24,11 @@ def ros_topics():
 def test_gazebo_topics_are_not_ros_topics(gazebo, capsys):
     world2d.ign("topic -l")
     out = capsys.readouterr().out.split()
-    for name in ("/clock", "/lidar2", "/model/vehicle_blue/odometry",
-                 "/model/vehicle_blue/tf", "/world/visualize_lidar_world/stats"):
+    for name in ("/clock", "/lidar", "/lidar/points", "/lidar2", "/lidar2/points",
+                 "/model/vehicle_blue/odometry", "/model/vehicle_blue/tf",
+                 "/world/visualize_lidar_world/stats"):
         assert name in out
+    assert "/model/vehicle_blue/cmd_vel" not in out          # only subscribed so far
     assert ros_topics() == ["/parameter_events", "/rosout"]
 
 
@@ -185,3 +187,38 @@ def test_ign_magic_prints_like_a_terminal(capsys):
     magics.MAGICS["ign"]("topic -l")
     assert "/model/vehicle_blue/odometry" in capsys.readouterr().out.split()
     labkit.reset()
+
+
+def test_two_way_string_bridge_carries_each_message_once(gazebo):
+    """/chatter@std_msgs/msg/String@ignition.msgs.StringMsg: a Gazebo message reaches ROS
+    once, a ROS message reaches Gazebo once, and the bridge never bounces its own back."""
+    import labkit.rclpy as rclpy
+    from labkit.interfaces import get_type
+    String = get_type("std_msgs/msg/String")
+    labkit.ros2("run ros_gz_bridge parameter_bridge /chatter@std_msgs/msg/String@ignition.msgs.StringMsg")
+    labkit.sleep(0.1)
+    info = labkit.ros2("topic info /chatter").stdout
+    assert "Publisher count: 1" in info and "Subscription count: 1" in info
+    on_gz = []
+    transport.TRANSPORT.subscribe("/chatter", "ignition.msgs.StringMsg", on_gz.append)
+    gz_publish = transport.TRANSPORT.advertise("/chatter", "ignition.msgs.StringMsg")
+    if not rclpy.ok():
+        rclpy.init()
+    node = rclpy.create_node("chatter_probe")
+    on_ros = []
+    node.create_subscription(String, "/chatter", lambda m: on_ros.append(m.data), 10)
+    pub = node.create_publisher(String, "/chatter", 10)
+    for _ in range(3):
+        rclpy.spin_once(node, timeout_sec=0.1)
+    gz_publish({"data": "from gazebo"})
+    for _ in range(5):
+        rclpy.spin_once(node, timeout_sec=0.1)
+    assert on_ros == ["from gazebo"]
+    assert [m["data"] for m in on_gz] == ["from gazebo"]          # not bounced back
+    pub.publish(String(data="from ros"))
+    for _ in range(5):
+        rclpy.spin_once(node, timeout_sec=0.1)
+    assert [m["data"] for m in on_gz] == ["from gazebo", "from ros"]
+    assert on_ros == ["from gazebo", "from ros"]                  # its own, once
+    transport.TRANSPORT.unadvertise(gz_publish)
+    node.destroy_node()

@@ -189,8 +189,17 @@ def twist_to_gz(msg):
             "angular": {"x": msg.angular.x, "y": msg.angular.y, "z": msg.angular.z}}
 
 
+def string_to_ros(m):
+    return get_type("std_msgs/msg/String")(data=str(m.get("data", "")))
+
+
+def string_to_gz(msg):
+    return {"data": msg.data}
+
+
 # (ROS type, gz type) -> (gz->ros, ros->gz); None where labkit has no conversion
 FACTORIES = {
+    ("std_msgs/msg/String", "ignition.msgs.StringMsg"): (string_to_ros, string_to_gz),
     ("sensor_msgs/msg/LaserScan", "ignition.msgs.LaserScan"): (laser_scan_to_ros, None),
     ("nav_msgs/msg/Odometry", "ignition.msgs.Odometry"): (odometry_to_ros, None),
     ("tf2_msgs/msg/TFMessage", "ignition.msgs.Pose_V"): (pose_v_to_tf, None),
@@ -229,28 +238,42 @@ class RosGzBridge(Node):
             return
         ros_cls = get_type(config.ros_type_name)
         gz_type = gz.normalize_type(config.gz_type_name)
+        # A two-way bridge must not carry its own messages back (ros_gz_bridge ignores
+        # its own publications on both sides): count what it sends each way.
+        echoes = {"to_ros": 0, "to_gz": 0, "two_way": config.direction == BIDIRECTIONAL}
         if config.direction in (BIDIRECTIONAL, GZ_TO_ROS):
             log.info(f"Creating GZ->ROS Bridge: [{config.gz_topic_name} ({config.gz_type_name}) "
                      f"-> {config.ros_topic_name} ({config.ros_type_name})] (Lazy {int(config.is_lazy)})")
             publisher = self.create_publisher(ros_cls, config.ros_topic_name, 10)
             self._gz_subs.append(self.transport.subscribe(
-                config.gz_topic_name, gz_type, self._forward(publisher, convert[0])))
+                config.gz_topic_name, gz_type, self._forward(publisher, convert[0], echoes)))
         if config.direction in (BIDIRECTIONAL, ROS_TO_GZ):
             log.info(f"Creating ROS->GZ Bridge: [{config.ros_topic_name} ({config.ros_type_name}) "
                      f"-> {config.gz_topic_name} ({config.gz_type_name})] (Lazy {int(config.is_lazy)})")
             gz_publish = self.transport.advertise(config.gz_topic_name, gz_type)
             self._gz_pubs.append(gz_publish)
             to_gz = convert[1]
-            self.create_subscription(ros_cls, config.ros_topic_name,
-                                     lambda msg: gz_publish(to_gz(msg)), 10)
+
+            def ros_to_gz(msg):
+                if echoes["to_ros"] > 0:          # our own GZ->ROS message coming back
+                    echoes["to_ros"] -= 1
+                    return
+                echoes["to_gz"] += 1
+                gz_publish(to_gz(msg))
+                echoes["to_gz"] = max(0, echoes["to_gz"] - 1)
+            self.create_subscription(ros_cls, config.ros_topic_name, ros_to_gz, 10)
 
     @staticmethod
-    def _forward(publisher, to_ros):
+    def _forward(publisher, to_ros, echoes):
         def callback(gz_msg):
+            if echoes["to_gz"] > 0:               # our own ROS->GZ message, delivered at once
+                return
             try:
                 publisher.publish(to_ros(gz_msg))
             except Exception:      # the bridge is shutting down: drop, as a dead socket would
-                pass
+                return
+            if echoes["two_way"]:
+                echoes["to_ros"] += 1             # our own subscription will see it: skip it there
         return callback
 
     def destroy_node(self):
