@@ -61,11 +61,10 @@ class Buffer(BufferCore, BufferInterface):
     def lookup_transform_full(self, target_frame, target_time, source_frame, source_time,
                               fixed_frame, timeout=Duration()):
         """Time travel: source_frame at source_time into target_frame at target_time."""
+        query = (target_frame, target_time, source_frame, source_time, fixed_frame)
         if duration_ns(timeout):
-            self.can_transform_full(target_frame, target_time, source_frame, source_time,
-                                    fixed_frame, timeout)
-        return self.lookup_transform_full_core(target_frame, target_time, source_frame,
-                                               source_time, fixed_frame)
+            self.can_transform_full(*query, timeout)
+        return self.lookup_transform_full_core(*query)
 
     def can_transform(self, target_frame, source_frame, time, timeout=Duration(),
                       return_debug_tuple=False):
