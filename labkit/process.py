@@ -88,6 +88,8 @@ class Process:
             target = _original[stream_name]
             if target is not None:
                 try:
+                    if flush:
+                        flush_other(stream_name)
                     target.write(text)
                     if flush:
                         target.flush()
@@ -264,6 +266,18 @@ time.sleep = _process_sleep
 
 # ------------------------------------------------------------ output proxy
 _original = {"stdout": None, "stderr": None}
+
+
+def flush_other(stream_name):
+    """Before a line goes out on one stream, what is waiting on the other goes first: a
+    kernel sends each stream when it flushes it, so without this the notebook's order
+    would depend on a timer instead of on what happened first."""
+    other = _original["stderr" if stream_name == "stdout" else "stdout"]
+    if other is not None:
+        try:
+            other.flush()
+        except Exception:
+            pass
 
 
 class _StreamProxy(io.TextIOBase):

@@ -97,7 +97,9 @@ class LineWriter:
     @staticmethod
     def _out(name, text):
         if text:
-            stream = sys.stdout if name == 'stdout' else sys.stderr
+            stream, other = (sys.stdout, sys.stderr) if name == 'stdout' else \
+                (sys.stderr, sys.stdout)
+            other.flush()       # what waits on the other stream was printed first
             stream.write(text)
             stream.flush()
 

@@ -159,3 +159,34 @@ def test_a_redirected_job_writes_stdout_to_the_file_and_stderr_whole_lines(termi
     assert "Publishing: \"Hello World: 1\"" in err.getvalue()
     assert target.read_text() == ""         # the talker logs to stderr; stdout stays empty
     labkit.reset()
+
+
+class KernelStream(io.TextIOBase):
+    """Like a kernel's stream: writes wait in a buffer; flush() sends them on the wire."""
+
+    def __init__(self, name, wire):
+        self.name, self.wire, self.buffer = name, wire, ""
+
+    def write(self, text):
+        self.buffer += text
+        return len(text)
+
+    def flush(self):
+        if self.buffer:
+            self.wire.append((self.name, self.buffer))
+            self.buffer = ""
+
+
+def test_what_the_cell_printed_first_reaches_the_notebook_first(monkeypatch):
+    wire = []
+    out, err = KernelStream("stdout", wire), KernelStream("stderr", wire)
+    process.install_output_proxy()
+    for name, target in (("stdout", out), ("stderr", err)):
+        monkeypatch.setattr(getattr(sys, name), "_target", target)
+        monkeypatch.setitem(process._original, name, target)
+    print("the cell prints first")          # waits in the kernel's stdout buffer
+    proc = process.start(main=lambda args=None: sys.stderr.write("[INFO] then a node\n"),
+                         name="node")
+    labkit.sleep(0.1)
+    assert wire == [("stdout", "the cell prints first\n"), ("stderr", "[INFO] then a node\n")]
+    assert not proc.running
