@@ -514,14 +514,15 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
     labkit.reset() leaves too; remote nodes vanish with the connection."""
     talker = labkit(tmp_path, "talker", TALKER, domain)
     code = textwrap.dedent(f"""
-        import labkit, time
+        import labkit, os, time
+        os.environ.pop('ROS_DOMAIN_ID')     # the domain comes from `connect` alone
         print(labkit.ros2('connect {domain}').stdout, end='')
         end = time.monotonic() + 10
         while '/talker' not in labkit.ros2('node list').stdout and time.monotonic() < end:
             time.sleep(0.1)
         print(labkit.ros2('node list').stdout, end='')
         print(labkit.ros2('disconnect').stdout, end='')
-        print(repr(labkit.ros2('node list').stdout))
+        print(repr(labkit.ros2('node list').stdout), os.environ.get('ROS_DOMAIN_ID'))
         labkit.connect({domain})
         labkit.reset()
         from labkit import dds
@@ -536,4 +537,4 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
         talker.terminate()
         finish(talker)
     assert nb.stdout == (f"joined DDS domain {domain} (this computer only)\n/talker\n"
-                         f"left DDS domain {domain}\n''\nconnected after reset False\n"), nb
+                         f"left DDS domain {domain}\n'' None\nconnected after reset False\n"), nb
