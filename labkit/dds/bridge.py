@@ -43,25 +43,6 @@ def is_remote(node):
     return getattr(node, "remote", False)
 
 
-class _Header:
-    """What a local service sees for a remote request (rmw_service_info_t's shape)."""
-    __slots__ = ("request_id", "source_timestamp", "received_timestamp", "_reply")
-
-    def __init__(self, request_id, reply, stamp=0):
-        self.request_id = request_id
-        self.source_timestamp = stamp
-        self.received_timestamp = stamp
-        self._reply = reply
-
-
-class _RequestId:
-    __slots__ = ("writer_guid", "sequence_number")
-
-    def __init__(self, writer_guid, sequence_number):
-        self.writer_guid = writer_guid
-        self.sequence_number = sequence_number
-
-
 def _mask():
     from cyclonedds.core import SampleState, ViewState, InstanceState
     return SampleState.Any | ViewState.Any | InstanceState.Any
@@ -527,8 +508,10 @@ class _Mirror:
                 request = deserialize(body, self.request_cls)
             except Exception:
                 continue
-            header = _Header(_RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
-                             self._make_reply(client_id, seq), info.source_timestamp)
+            # rclpy's own request header (imported late: rclpy sits above this room)
+            from labkit.rclpy.service import RequestHeader, RequestId
+            header = RequestHeader(RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
+                                   self._make_reply(client_id, seq), info.source_timestamp)
             if self.ep.sink is not None:
                 self.ep.sink((request, header))
 
