@@ -10,14 +10,18 @@ What is stored is what a reader should see, as a terminal shows it:
   build, splitting a CLI line in two);
 - a picture's live widget view is not stored where the output also has a static
   face (PNG, JPEG, SVG, HTML): the widget's model lives in the kernel, so a
-  stored view only reads "model not found" when the notebook is reopened.
+  stored view only reads "model not found" when the notebook is reopened; the
+  saved widget state keeps only the widgets still shown.
 """
+import json
 import os
 import pathlib
+import re
 import sys
 import time
 
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
 STATIC_FACES = ("image/png", "image/jpeg", "image/svg+xml", "text/html")
 
 
@@ -49,12 +53,37 @@ def drop_live_views(outputs):
     return outputs
 
 
+def prune_widget_state(nb):
+    """Keep the saved widget state of the widgets still shown (and what they refer
+    to); a notebook that shows none keeps none (its HTML page loads no widget code)."""
+    widgets = nb.metadata.get("widgets", {})
+    saved = widgets.get(WIDGET_STATE, {})
+    state = saved.get("state")
+    if state is None:
+        return nb
+    wanted = [out["data"][WIDGET_VIEW]["model_id"] for cell in nb.cells
+              for out in cell.get("outputs", []) if WIDGET_VIEW in out.get("data", {})]
+    keep = set()
+    while wanted:
+        model_id = wanted.pop()
+        if model_id in keep or model_id not in state:
+            continue
+        keep.add(model_id)
+        wanted += re.findall(r"IPY_MODEL_([0-9a-f]+)", json.dumps(state[model_id]))
+    saved["state"] = {k: v for k, v in state.items() if k in keep}
+    if not keep:
+        del widgets[WIDGET_STATE]
+        if not widgets:
+            del nb.metadata["widgets"]
+    return nb
+
+
 def tidy(nb):
     """What execute() applies to a notebook before storing it; returns the notebook."""
     for cell in nb.cells:
         if cell.get("cell_type") == "code" and cell.get("outputs"):
             cell.outputs = coalesce_streams(drop_live_views(cell.outputs))
-    return nb
+    return prune_widget_state(nb)
 
 
 def execute(path, timeout=600):

@@ -104,3 +104,27 @@ def test_html_shows_each_cli_line_whole(book_html):
             problems += [(page.name, "blank block", "") for m in blocks
                          if not re.sub(r"<[^>]+>", "", m.group(2)).strip()]
     assert not problems, f"{len(problems)} cut lines in the HTML, e.g. {problems[:5]}"
+
+
+def test_tidy_keeps_only_the_widget_state_still_shown():
+    nb = nbformat.v4.new_notebook()
+    view = lambda mid: {"version_major": 2, "version_minor": 0, "model_id": mid}  # noqa: E731
+    cell = nbformat.v4.new_code_cell("x")
+    cell.outputs = [
+        nbformat.v4.new_output("display_data", data={       # a canvas with its PNG
+            "image/png": "iVBO", "text/plain": "<c>", ex.WIDGET_VIEW: view("aa")}),
+        nbformat.v4.new_output("display_data", data={       # sliders: widget only
+            "text/plain": "VBox()", ex.WIDGET_VIEW: view("bb")}),
+    ]
+    nb.cells.append(cell)
+    nb.metadata["widgets"] = {ex.WIDGET_STATE: {"version_major": 2, "version_minor": 0,
+                                                "state": {
+        "aa": {"state": {"layout": "IPY_MODEL_a1"}}, "a1": {"state": {}},
+        "bb": {"state": {"children": ["IPY_MODEL_b1"], "layout": "IPY_MODEL_b2"}},
+        "b1": {"state": {"layout": "IPY_MODEL_b3"}}, "b2": {"state": {}},
+        "b3": {"state": {}}}}}
+    ex.tidy(nb)
+    assert set(nb.metadata["widgets"][ex.WIDGET_STATE]["state"]) == {"bb", "b1", "b2", "b3"}
+    nb.cells[0].outputs = nb.cells[0].outputs[:1]
+    ex.tidy(nb)
+    assert "widgets" not in nb.metadata
