@@ -12,7 +12,7 @@ rosidl would, and labkit.interfaces generates the classes when imported.
 import os
 import shutil
 
-from labkit.ament import cmake, setup_py
+from labkit.ament import cmake, envscripts, setup_py
 
 PYTHON_DIR = os.path.join('lib', 'python3.10', 'site-packages')
 RESOURCE_INDEX = os.path.join('share', 'ament_index', 'resource_index')
@@ -96,22 +96,21 @@ def _clean(path):
         shutil.rmtree(path)
 
 
-def _common_install(ctx, with_manifest, with_marker):
-    """What every package gets: colcon-core's package list and environment hooks."""
+def _common_install(ctx, with_manifest, with_marker, hooks=(), extra=()):
+    """What every package gets: colcon-core's package list and environment hooks.
+
+    hooks: [(stem, kind, VARIABLE, subfolder)] besides PYTHONPATH (which comes first
+    when the package has a site-packages folder); extra: more files package.dsv sources.
+    """
     pkg = ctx.pkg
     share = os.path.join(ctx.prefix, 'share', pkg.name)
     run_deps = sorted(pkg.deps.get('run', set()))
     _write(os.path.join(ctx.prefix, 'share', 'colcon-core', 'packages', pkg.name),
            ':'.join(run_deps))
-    hooks = ['share/%s/hook/ament_prefix_path.dsv' % pkg.name]
-    _write(os.path.join(share, 'hook', 'ament_prefix_path.dsv'),
-           'prepend-non-duplicate;AMENT_PREFIX_PATH;\n')
     if os.path.isdir(os.path.join(ctx.prefix, PYTHON_DIR)):
-        _write(os.path.join(share, 'hook', 'pythonpath.dsv'),
-               'prepend-non-duplicate;PYTHONPATH;lib/python3.10/site-packages\n')
-        hooks.append('share/%s/hook/pythonpath.dsv' % pkg.name)
-    _write(os.path.join(share, 'package.dsv'),
-           ''.join(f'source;{h}\n' for h in hooks))
+        hooks = [('pythonpath', 'prepend-non-duplicate', 'PYTHONPATH',
+                  PYTHON_DIR.replace(os.sep, '/'))] + list(hooks)
+    envscripts.package_scripts(ctx.prefix, pkg.name, hooks, extra)
     if with_manifest:
         _place(os.path.join(pkg.path, 'package.xml'), os.path.join(share, 'package.xml'),
                ctx.symlink)
@@ -204,7 +203,10 @@ def build_ament_python(ctx):
         egg_info = os.path.join(ctx.build_dir, egg_name + '.egg-info')
     else:
         egg_info = os.path.join(site, f'{egg_name}-{version}-py3.10.egg-info')
-    _write_egg_info(egg_info, name, version, tops, scripts, kwargs)
+    _write_egg_info(egg_info, name, version, tops, scripts, kwargs,
+                    _sdist_sources(pkg.path, packages, package_dir, py_modules, data_files),
+                    # colcon runs egg_info with --egg-base build/<pkg>
+                    os.path.relpath(ctx.build_dir, pkg.path).replace(os.sep, '/'))
 
     # console scripts: where setup.cfg sends them ($base/lib/<pkg>), else bin/
     key = 'script_dir' if ctx.symlink else 'install_scripts'
@@ -246,8 +248,13 @@ def build_ament_python(ctx):
                 f"WARNING:colcon.colcon_ros.task.ament_python.build:Package '{pkg.name}' "
                 f"doesn't explicitly install {what} (colcon-ros currently does it "
                 "implicitly but that fallback will be removed in the future)")
+    hooks = [('ament_prefix_path', 'prepend-non-duplicate', 'AMENT_PREFIX_PATH', '')]
+    if ctx.symlink:     # `setup.py develop` left the code in build/<pkg>
+        hooks.append(('pythonpath_develop', 'prepend-non-duplicate', 'PYTHONPATH',
+                      os.path.abspath(ctx.build_dir)))
     _common_install(ctx, with_manifest=manifest not in installed,
-                    with_marker=marker not in installed)
+                    with_marker=marker not in installed,
+                    hooks=hooks)
     res.cost = (0.62 + 0.04 * len(packages) + 0.03 * len(data_files) + 0.05 * len(scripts)
                 - (0.1 if ctx.symlink else 0.0))
     return res
@@ -262,7 +269,25 @@ def _package_source(root, parts, package_dir):
     return os.path.join(root, *parts)
 
 
-def _write_egg_info(folder, name, version, tops, scripts, kwargs):
+def _sdist_sources(root, packages, package_dir, py_modules, data_files):
+    """The files setuptools' egg_info lists in SOURCES.txt (relative to the package)."""
+    found = [f for f in ('setup.cfg', 'setup.py') if os.path.isfile(os.path.join(root, f))]
+    for dotted in packages:
+        src = _package_source(root, dotted.split('.'), package_dir)
+        if os.path.isdir(src):
+            found += [os.path.relpath(os.path.join(src, f), root) for f in os.listdir(src)
+                      if f.endswith('.py')]
+    found += [os.path.join(package_dir.get('', ''), m + '.py').lstrip('/') for m in py_modules]
+    for entry in data_files:
+        found += [entry] if isinstance(entry, str) else list(entry[1])
+    tests = os.path.join(root, 'test')
+    if os.path.isdir(tests):
+        found += ['test/' + f for f in os.listdir(tests)
+                  if f.startswith('test') and f.endswith('.py')]
+    return [f.replace(os.sep, '/') for f in found]
+
+
+def _write_egg_info(folder, name, version, tops, scripts, kwargs, sources=(), egg_base=''):
     _write(os.path.join(folder, 'PKG-INFO'),
            f'Metadata-Version: 2.1\nName: {name}\nVersion: {version}\n'
            f'Summary: {kwargs.get("description", "UNKNOWN")}\n'
@@ -274,6 +299,15 @@ def _write_egg_info(folder, name, version, tops, scripts, kwargs):
     _write(os.path.join(folder, 'entry_points.txt'),
            '[console_scripts]\n' + ''.join(f'{e} = {t}\n' for e, t in scripts) + '\n'
            if scripts else '')
+    requires = [str(r) for r in kwargs.get('install_requires') or []]
+    if requires:
+        _write(os.path.join(folder, 'requires.txt'), ''.join(r + '\n' for r in requires))
+    # SOURCES.txt: what egg_info found in the source tree, then the egg-info files
+    own = set(os.listdir(folder)) | {'SOURCES.txt'}
+    egg_base = f'{egg_base}/' if egg_base else ''
+    _write(os.path.join(folder, 'SOURCES.txt'), ''.join(
+        f + '\n' for f in sorted(set(sources) | {
+            f'{egg_base}{name.replace("-", "_")}.egg-info/{f}' for f in own})))
 
 
 def _script_text(name, version, exe, module, func):
@@ -390,7 +424,13 @@ def build_ament_cmake(ctx):
             return res.fail(f"error: package directory '{package_dir}' does not exist")
         _place_tree(src, os.path.join(ctx.prefix, PYTHON_DIR, module), False)
     # without ament_package() nothing registers the package in the ament index
-    _common_install(ctx, with_manifest=conf.ament_package, with_marker=conf.ament_package)
+    extra = []
+    if conf.ament_package:      # ament_package() installs the environment and CMake config
+        extra = envscripts.ament_cmake_files(
+            ctx.prefix, pkg.name, os.path.isdir(os.path.join(ctx.prefix, PYTHON_DIR)))
+    _common_install(ctx, with_manifest=conf.ament_package, with_marker=conf.ament_package,
+                    hooks=[('cmake_prefix_path', 'prepend-non-duplicate', 'CMAKE_PREFIX_PATH',
+                            '')], extra=extra)
     res.cost = 1.45 + 0.85 * len(specs) + 0.05 * len(conf.installs) + \
         0.2 * len(conf.targets)
     return res

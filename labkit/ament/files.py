@@ -107,9 +107,22 @@ def pwd():
     print(display(os.getcwd()))
 
 
-def ls(path='.'):
-    """`ls PATH` (names sorted, one line, like ls when its output is not a terminal's)."""
-    print('  '.join(sorted(os.listdir(expand(path)))))
+def ls(*args, all=False):
+    """`ls [-a|-A] [PATH]` (names sorted, one line, like ls when its output is not a
+    terminal's). Names starting with a dot are shown only with -a (which adds . and
+    ..), -A or all=True, as ls does."""
+    options = [a for a in args if a.startswith('-') and len(a) > 1]
+    paths = [a for a in args if a not in options] or ['.']
+    for option in options:
+        if option not in ('-a', '-A'):
+            raise ValueError(f'ament.ls knows -a and -A, not {option}')
+    for path in paths:
+        names = os.listdir(expand(path))
+        if '-a' in options or '-A' in options or all:
+            names += ['.', '..'] if '-a' in options else []
+        else:
+            names = [n for n in names if not n.startswith('.')]
+        print('  '.join(sorted(names)))
 
 
 def cat(path):
