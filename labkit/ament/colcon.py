@@ -228,7 +228,7 @@ def run_command(command):
         return CompletedCommand(['colcon', *argv], e.status, out.getvalue(), err.getvalue(),
                                 None, chunks)
     if args.verb is None:
-        io.print(USAGE, end='')
+        io.print(USAGE)                 # colcon-core print()s format_usage(): a blank line follows
         io.eprint('Error: No verb provided')
         rc = 1
     else:

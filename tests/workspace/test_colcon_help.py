@@ -22,8 +22,8 @@ def test_help_lists_every_verb_of_the_real_tool():
 def test_no_verb_prints_the_same_usage_and_an_error():
     r = colcon.run_command('')
     assert r.returncode == 1
-    assert r.stdout == colcon.USAGE and r.stderr.strip() == 'Error: No verb provided'
-    assert colcon.HELP.startswith(r.stdout)
+    assert r.stdout == colcon.USAGE + '\n' and r.stderr.strip() == 'Error: No verb provided'
+    assert colcon.HELP.startswith(colcon.USAGE)
 
 
 def test_an_unknown_argument_prints_the_real_usage():
