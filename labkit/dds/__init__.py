@@ -80,6 +80,12 @@ def connect(domain_id=None, localhost_only=None):
                                f"domain {domain}: {exc}") from None
         # the process now lives on that domain, like `export ROS_DOMAIN_ID=...`: nodes
         # and ros2 verbs started from here on join it (disconnect() puts it back)
+        try:   # stopping everything (labkit.reset, a test's clean-up) leaves DDS too
+            from labkit import process
+            if disconnect not in process.reset_hooks:
+                process.reset_hooks.append(disconnect)
+        except ImportError:
+            pass
         if not _saved_domain:         # a reconnect keeps the value from before the first
             _saved_domain.append(os.environ.get("ROS_DOMAIN_ID"))
         os.environ["ROS_DOMAIN_ID"] = str(domain)

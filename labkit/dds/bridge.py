@@ -294,9 +294,12 @@ class Bridge:
 
     # ------------------------------------------------------------ DDS -> graph
     def _sync_remote(self):
+        """Take what discovery brought; rebuild the remote graph entries if anything did."""
         part_reader, pub_reader, sub_reader = self._builtin
         from cyclonedds.core import InstanceState
+        changed = False
         for sample in part_reader.take(256):
+            changed = True
             key = sample.key.bytes
             if sample.sample_info.instance_state == InstanceState.Alive:
                 if key != self.guid:
@@ -306,6 +309,7 @@ class Bridge:
                 self._infos.pop(key, None)
         for reader, kind in ((pub_reader, "writer"), (sub_reader, "reader")):
             for sample in reader.take(256):
+                changed = True
                 key = sample.key.bytes
                 if sample.sample_info.instance_state == InstanceState.Alive:
                     if sample.participant_key.bytes != self.guid:
@@ -319,7 +323,9 @@ class Bridge:
                 continue
             if participant != self.guid:
                 self._infos[participant] = nodes
-        self._rebuild_remote()
+                changed = True
+        if changed:
+            self._rebuild_remote()
 
     def _rebuild_remote(self):
         owner = {}
