@@ -64,6 +64,7 @@ class Bridge:
         self.domain_id = domain_id
         self.localhost = localhost
         self.gid_size = discovery.gid_size(distro if distro is not None else config.distro())
+        self._distro_given = distro is not None or bool(os.environ.get("ROS_DISTRO"))
         self._mask = _mask()
         self._stop = False
         self._dirty = True
@@ -318,14 +319,29 @@ class Bridge:
                     self._remote_eps.pop(key, None)
         for data, info in self.take(self._info_reader):
             try:
-                participant, nodes = discovery.decode(data)
+                participant, nodes = discovery.decode(data, self.gid_size)
             except discovery.DecodeError:
-                continue
+                try:
+                    participant, nodes = discovery.decode(data)
+                except discovery.DecodeError:
+                    continue
+                self._follow_peer_layout()
             if participant != self.guid:
                 self._infos[participant] = nodes
                 changed = True
         if changed:
             self._rebuild_remote()
+
+    def _follow_peer_layout(self):
+        """A peer speaks the other Gid layout (Humble 24 bytes, Jazzy and later 16): with
+        no ROS_DISTRO saying which one we are, speak the peers' so they list our nodes."""
+        if self._distro_given:
+            return
+        self.gid_size = (discovery.JAZZY_GID if self.gid_size == discovery.HUMBLE_GID
+                         else discovery.HUMBLE_GID)
+        self._distro_given = True        # switch once
+        self._dirty = True
+        self._nodes_published = None     # republish ros_discovery_info in the new layout
 
     def _rebuild_remote(self):
         owner = {}

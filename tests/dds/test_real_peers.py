@@ -41,12 +41,14 @@ def real(tmp_path, name, code, domain):
                             stderr=subprocess.PIPE, text=True)
 
 
-def labkit(tmp_path, name, code, domain, *args):
+def labkit(tmp_path, name, code, domain, *args, distro="jazzy"):
     """Start a program under `labkit exec` (live time, joins DDS like a ROS 2 process)."""
     path = tmp_path / f"{name}.py"
     path.write_text(PRELUDE + textwrap.dedent(code))
-    env = _env(domain, LABKIT_TIME="live", LABKIT_DDS="on", ROS_DISTRO="jazzy",
+    env = _env(domain, LABKIT_TIME="live", LABKIT_DDS="on", ROS_DISTRO=distro,
                PYTHONPATH=str(REPO))
+    if distro is None:
+        del env["ROS_DISTRO"]
     return subprocess.Popen([sys.executable, "-m", "labkit", "exec", str(path), *args], env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
 
@@ -538,3 +540,25 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
         finish(talker)
     assert nb.stdout == (f"joined DDS domain {domain} (this computer only)\n/talker\n"
                          f"left DDS domain {domain}\n'' None\nconnected after reset False\n"), nb
+
+
+@needs_rosref
+def test_without_ros_distro_labkit_follows_a_jazzy_peers_gid_layout(tmp_path, domain):
+    """Humble's 24-byte gids are the default; when ROS_DISTRO is not set and the peers
+    send Jazzy's 16-byte ones, labkit switches so that they list its nodes."""
+    lk = labkit(tmp_path, "humble_default", """
+        rclpy.init()
+        node = rclpy.create_node('humble_default')
+        seen = lambda: 'jazzy_peer' in [n for n, _ in node.get_node_names_and_namespaces()]
+        spin_until(node, seen, 15)
+        spin_until(node, lambda: not seen(), 15)
+    """, domain, distro=None)
+    peer = real(tmp_path, "jazzy_peer", """
+        rclpy.init(args=[])
+        node = rclpy.create_node('jazzy_peer')
+        seen = lambda: 'humble_default' in [n for n, _ in node.get_node_names_and_namespaces()]
+        print('lists labkit node', spin_until(node, seen, 15))
+    """, domain)
+    out, err = finish(peer)
+    finish(lk)
+    assert "lists labkit node True" in out, out + err
