@@ -42,6 +42,32 @@ def _graph_node():
     return _node
 
 
+class Verdict:
+    """What report() returns: true when every check passed (`assert c.report()`
+    works), and nothing more in the cell's output than the report itself (a
+    bare True/False under the report would only distract)."""
+
+    __slots__ = ("passed",)
+
+    def __init__(self, passed: bool):
+        self.passed = bool(passed)
+
+    def __bool__(self) -> bool:
+        return self.passed
+
+    def __eq__(self, other) -> bool:
+        return self.passed == bool(other)
+
+    def __hash__(self) -> int:
+        return hash(self.passed)
+
+    def __repr__(self) -> str:
+        return repr(self.passed)
+
+    def _ipython_display_(self):
+        pass
+
+
 class Checker:
     """Collects the results of the checks of one exercise."""
 
@@ -59,7 +85,7 @@ class Checker:
     def passed(self) -> bool:
         return bool(self.results) and all(ok for ok, _ in self.results)
 
-    def report(self) -> bool:
+    def report(self) -> "Verdict":
         print(f"【{self.title}】")
         for ok, text in self.results:
             print((PASS if ok else FAIL) + text)
@@ -70,7 +96,7 @@ class Checker:
             print(f"还差 {missing} 项，改好后再运行这个单元格。")
         else:
             print("全部正确！")
-        return self.passed
+        return Verdict(self.passed)
 
     # -- the graph ----------------------------------------------------------
     def node(self, name: str) -> bool:
