@@ -80,7 +80,8 @@ def finish(proc, timeout=25):
 
 
 # A helper both sides use: spin until a condition holds or a deadline passes.
-PRELUDE = """import time
+PRELUDE = """import os
+import time
 import rclpy
 def spin_until(node, cond, timeout):
     end = time.monotonic() + timeout
@@ -210,12 +211,13 @@ def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, dom
                                  QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL))
         spin_until(node, lambda: got, 10)
         print('late joiner got', got)
-        spin_until(node, lambda: False, 7.0)
-    """, domain)
+        spin_until(node, lambda: os.path.exists(DONE), 15)   # until the test has looked
+    """.replace("DONE", repr(str(tmp_path / "done"))), domain)
     time.sleep(1.0)
     listed = labkit_ros2(domain, "node", "list", background=True)
     info = labkit_ros2(domain, "node", "info", "/late_sub", background=True)
     listed, info = done(listed), done(info)
+    (tmp_path / "done").touch()
     real_out, real_err = finish(real_prog)
     finish(lk_prog)
     assert "late joiner got ['published before you came']" in real_out, real_out + real_err
@@ -370,12 +372,14 @@ def test_labkit_to_labkit_services_actions_parameters(tmp_path, domain):
     all over DDS with rmw_cyclonedds_cpp's request header."""
     server = labkit(tmp_path, "lk_server", LK_SERVER, domain)
     assert server.stdout.readline().strip() == "ready"
+    # three terminals at once, then the parameter change
     call = labkit_ros2(domain, "service", "call", "/add_two_ints",
-                       "example_interfaces/srv/AddTwoInts", "{a: 2, b: 40}")
+                       "example_interfaces/srv/AddTwoInts", "{a: 2, b: 40}", background=True)
     goal = labkit_ros2(domain, "action", "send_goal", "--feedback", "/fibonacci",
-                       "example_interfaces/action/Fibonacci", "{order: 4}")
-    got = labkit_ros2(domain, "param", "get", "/lk_server", "gain")
-    done = labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
+                       "example_interfaces/action/Fibonacci", "{order: 4}", background=True)
+    got = labkit_ros2(domain, "param", "get", "/lk_server", "gain", background=True)
+    call, goal, got = done(call), done(goal), done(got)
+    set_ = labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
     out, err = finish(server)
     assert "example_interfaces.srv.AddTwoInts_Response(sum=42)" in call.stdout, call
     assert "Goal accepted with ID:" in goal.stdout, goal
@@ -383,7 +387,7 @@ def test_labkit_to_labkit_services_actions_parameters(tmp_path, domain):
     assert "Result:\n    sequence:\n- 0\n- 1\n- 1\n- 2\n- 3" in goal.stdout
     assert "Goal finished with status: SUCCEEDED" in goal.stdout
     assert got.stdout == "Integer value is: 2\n", got
-    assert done.stdout == "Set parameter successful\n", done
+    assert set_.stdout == "Set parameter successful\n", set_
     assert "gain now 7" in out, out + err
 
 
@@ -400,7 +404,7 @@ def test_fast_dds_client_calling_labkit_service_gets_one_clear_line(tmp_path, do
         cli = node.create_client(ListParameters, '/lk_server/list_parameters')
         print('available', cli.wait_for_service(timeout_sec=10.0), flush=True)
         future = cli.call_async(ListParameters.Request())
-        rclpy.spin_until_future_complete(node, future, timeout_sec=3.0)
+        rclpy.spin_until_future_complete(node, future, timeout_sec=2.0)
         print('answered', future.done())
     """, domain)
     out, _ = finish(client)
