@@ -15,7 +15,6 @@ import time
 import pytest
 
 import labkit
-from labkit.graph import world
 
 
 class BrowserModel:
@@ -61,23 +60,7 @@ def browser(monkeypatch):
     return model
 
 
-@pytest.fixture
-def live():
-    labkit.reset()
-    world.set_mode("live")
-    yield
-    labkit.reset()
-    world.set_mode("virtual")
-
-
-def _wait(predicate, seconds=10.0):
-    end = time.monotonic() + seconds
-    while time.monotonic() < end and not predicate():
-        time.sleep(0.02)
-    return predicate()
-
-
-def test_many_canvases_each_get_their_own_frames(live, browser):
+def test_many_canvases_each_get_their_own_frames(live_time, browser, until):
     from labkit.viz.canvas import TurtleCanvas
     canvases = []
 
@@ -91,7 +74,7 @@ def test_many_canvases_each_get_their_own_frames(live, browser):
     for round_ in range(3):         # three turtlesims, as a chapter runs them one by one
         labkit.ros2("run turtlesim turtlesim_node")
         from labkit.sims.turtlesim import node
-        assert _wait(lambda: node.running())
+        assert until(lambda: node.running())
         labkit.ros2('topic pub --rate 30 /turtle1/cmd_vel geometry_msgs/msg/Twist '
                     '"{linear: {x: 2.0}, angular: {z: 1.8}}"')
         open_canvas()
@@ -126,7 +109,7 @@ def test_many_canvases_each_get_their_own_frames(live, browser):
             c.close()
 
 
-def test_a_failed_frame_still_leaves_its_commands_whole(live, browser, monkeypatch):
+def test_a_failed_frame_still_leaves_its_commands_whole(live_time, browser, monkeypatch):
     """An error half-way through a frame must not leave the canvas's channel holding
     commands (ipycanvas's own hold_canvas() does, for every canvas of the kernel)."""
     from labkit.viz import canvas as canvas_module
@@ -142,7 +125,7 @@ def test_a_failed_frame_still_leaves_its_commands_whole(live, browser, monkeypat
     c.close()
 
 
-def test_reset_leaves_no_canvas_following(live, browser):
+def test_reset_leaves_no_canvas_following(live_time, browser):
     from labkit.viz.canvas import TurtleCanvas
     labkit.ros2("run turtlesim turtlesim_node")
     canvases = [TurtleCanvas.attach() for _ in range(3)]
