@@ -14,6 +14,18 @@ time (CI, notebook execution) `connect()` refuses with one line, and `labkit exe
 `labkit ros2` stay in-process; a notebook that talks to real ROS 2 calls
 `labkit.set_time_mode('live')` first. LABKIT_DDS=off keeps a process in-process
 (the test suite sets it so parallel runs never see each other).
+
+connect(domain_id=N) also makes N the process's ROS_DOMAIN_ID (nodes and ros2 verbs
+started afterwards are on it); disconnect() and labkit.reset() put it back.
+
+What it does not do (yet): a real Fast DDS *client* calling a labkit service gets no
+reply (Fast DDS matches replies by the RTPS related-sample-identity, which Cyclone's
+API cannot set): labkit prints one line with the remedy,
+RMW_IMPLEMENTATION=rmw_cyclonedds_cpp on the real side. 640x480 images from labkit to
+a Fast DDS process lose frames on a loaded machine (UDP bursts; see
+benchmarks/README.md). Cyclone binds its two unicast receive sockets to the wildcard
+address (it sends to and advertises 127.0.0.1 only). No SROS2 security, no
+type_description service, no content-filtered topics.
 """
 import os
 import threading
