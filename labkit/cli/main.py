@@ -135,6 +135,14 @@ def ros2_main(argv):
     if argv[:1] and argv[0] in _GRAPH_NOUNS:
         if not _join_dds(settle=argv[0] not in ('run', 'launch')):
             return 1
+    try:
+        return _ros2_verb(argv)
+    finally:   # leave DDS politely: peers drop our nodes now, not at lease expiry
+        if 'labkit.dds' in sys.modules:
+            sys.modules['labkit.dds'].disconnect()
+
+
+def _ros2_verb(argv):
     from labkit.cli.ros2 import run_command
     result = run_command(list(argv))
     if getattr(result, 'wait', None) is not None and result.returncode is None:
