@@ -3,7 +3,7 @@
     .venv/bin/python benchmarks/bench_bag.py [N]
 
 Each figure is messages per second over N geometry_msgs/Twist messages (52 bytes of
-CDR), sqlite3 storage, virtual time. Goal: a ratio of at least 0.8 against doing the
+CDR), sqlite3 and mcap storage, virtual time. Goal: a ratio of at least 0.8 against doing the
 same with rosbags directly: writer vs "serialize + rosbags Writer.write", record vs a node that writes with
 rosbags on the same in-process transport (and vs the bare Writer), play vs
 "rosbags Reader + deserialize + publish to the same subscriber" (a bag player must
@@ -30,24 +30,29 @@ def _messages(n):
     return out
 
 
-def rosbags_write(path, msgs, serialize):
+def _rosbags_writer(path, storage):
+    from rosbags.rosbag2 import StoragePlugin, Writer
+    plugin = StoragePlugin.MCAP if storage == 'mcap' else StoragePlugin.SQLITE3
+    return Writer(path, version=8, storage_plugin=plugin)
+
+
+def rosbags_write(path, msgs, serialize, storage):
     """The baseline: rosbags writes each message (serialized here, as a recorder must)."""
-    from rosbags.rosbag2 import Writer
     from rosbags.typesys import Stores, get_typestore
     store = get_typestore(Stores.ROS2_HUMBLE)
     t0 = time.perf_counter()
-    with Writer(path, version=8) as w:
+    with _rosbags_writer(path, storage) as w:
         conn = w.add_connection('/cmd', 'geometry_msgs/msg/Twist', typestore=store)
         for k, m in enumerate(msgs):
             w.write(conn, k * 1000, serialize(m))
     return time.perf_counter() - t0
 
 
-def labkit_write(path, msgs, serialize):
+def labkit_write(path, msgs, serialize, storage):
     from labkit.bag import rosbag2_py
     t0 = time.perf_counter()
     w = rosbag2_py.SequentialWriter()
-    w.open(rosbag2_py.StorageOptions(uri=path, storage_id='sqlite3'),
+    w.open(rosbag2_py.StorageOptions(uri=path, storage_id=storage),
            rosbag2_py.ConverterOptions('', ''))
     w.create_topic(rosbag2_py.TopicMetadata('/cmd', 'geometry_msgs/msg/Twist', 'cdr'))
     for k, m in enumerate(msgs):
@@ -72,19 +77,18 @@ def _publish_in_batches(msgs):
     return node, t0
 
 
-def rosbags_recorder(path, msgs):
+def rosbags_recorder(path, msgs, storage):
     """The baseline for record on the same transport: a node that writes with rosbags."""
     import labkit
     import labkit.rclpy as rclpy
     from labkit import process
-    from rosbags.rosbag2 import Writer
     from rosbags.typesys import Stores, get_typestore
     store = get_typestore(Stores.ROS2_HUMBLE)
 
     def main(args=None):
         rclpy.init(args=args)
         node = rclpy.create_node('rosbags_recorder')
-        with Writer(path, version=8) as w:
+        with _rosbags_writer(path, storage) as w:
             conn = w.add_connection('/cmd', 'geometry_msgs/msg/Twist', typestore=store)
             clock = node.get_clock()
             node.create_subscription(
@@ -104,11 +108,11 @@ def rosbags_recorder(path, msgs):
     return took
 
 
-def labkit_record(path, msgs):
+def labkit_record(path, msgs, storage):
     """`ros2 bag record` a publisher: publish, deliver, serialize, write, then stop."""
     import labkit
     import labkit.rclpy as rclpy
-    rec = labkit.ros2(f'bag record -o {path} /cmd')
+    rec = labkit.ros2(f'bag record -s {storage} -o {path} /cmd')
     node, t0 = _publish_in_batches(msgs)
     rec.stop()
     took = time.perf_counter() - t0
@@ -139,13 +143,14 @@ def rosbags_play(path, expected):
     import labkit
     import labkit.interfaces as ifc
     import labkit.rclpy as rclpy
-    from labkit.rclpy.qos import HistoryPolicy, QoSProfile
+    from labkit.rclpy.qos import QoSProfile
     from rosbags.rosbag2 import Reader
     rclpy.init()
     node = rclpy.create_node('bench_sub')
     Twist = ifc.get_type('geometry_msgs/msg/Twist')
     got = []
-    node.create_subscription(Twist, '/cmd', got.append, QoSProfile(history=HistoryPolicy.KEEP_ALL))
+    # KEEP_LAST as deep as the bag: every message waits (KEEP_ALL stops at DDS's 5000)
+    node.create_subscription(Twist, '/cmd', got.append, QoSProfile(depth=expected))
     pub = node.create_publisher(Twist, '/cmd', 10)
     t0 = time.perf_counter()
     with Reader(path) as r:
@@ -168,13 +173,13 @@ def labkit_play(path, expected):
     node = rclpy.create_node('bench_sub')
     got = []
     import labkit.interfaces as ifc
-    from labkit.rclpy.qos import HistoryPolicy, QoSProfile
+    from labkit.rclpy.qos import QoSProfile
     node.create_subscription(ifc.get_type('geometry_msgs/msg/Twist'), '/cmd', got.append,
-                             QoSProfile(history=HistoryPolicy.KEEP_ALL))
+                             QoSProfile(depth=expected))
     t0 = time.perf_counter()
     play = labkit.ros2(f'bag play {path} --rate 1000000 --disable-keyboard-controls')
     play.wait()
-    took = time.perf_counter() - t0  # every message is in the subscriber's queue (KEEP_ALL)
+    took = time.perf_counter() - t0  # every message is in the subscriber's queue
     while len(got) < expected:  # (its callbacks are the subscriber's cost, not the bag's)
         rclpy.spin_once(node, timeout_sec=0.0)
     assert len(got) == expected, f'played {len(got)} of {expected}'
@@ -193,28 +198,32 @@ def main():
     def keep(name, seconds):  # best of the repeats: the machine may be busy
         best[name] = min(best.get(name, seconds), seconds)
 
+    rate = lambda s: n / s  # noqa: E731
     with tempfile.TemporaryDirectory() as tmp:
         os.chdir(tmp)
         for rep in range(REPEATS):
-            keep('base_w', rosbags_write(f'a{rep}', msgs, ifc.serialize))
-            keep('ours_w', labkit_write(f'b{rep}', msgs, ifc.serialize))
-            keep('base_rr', rosbags_recorder(f'r{rep}', msgs))
-            keep('ours_r', labkit_record(f'c{rep}', msgs))
-            base_r, count = rosbags_read(f'b{rep}')
+            for st in ('sqlite3', 'mcap'):
+                keep(('base_w', st), rosbags_write(f'a{rep}{st}', msgs, ifc.serialize, st))
+                keep(('ours_w', st), labkit_write(f'b{rep}{st}', msgs, ifc.serialize, st))
+                keep(('base_rr', st), rosbags_recorder(f'r{rep}{st}', msgs, st))
+                keep(('ours_r', st), labkit_record(f'c{rep}{st}', msgs, st))
+            base_r, count = rosbags_read(f'b{rep}sqlite3')
             keep('base_r', base_r)
-            keep('base_p', rosbags_play(f'b{rep}', count))
-            keep('ours_p', labkit_play(f'b{rep}', count))
-    base_w, ours_w, ours_r = best['base_w'], best['ours_w'], best['ours_r']
-    base_rr = best['base_rr']
+            keep('base_p', rosbags_play(f'b{rep}sqlite3', count))
+            keep('ours_p', labkit_play(f'b{rep}sqlite3', count))
+    print(f'messages: {n} geometry_msgs/msg/Twist')
+    for st in ('sqlite3', 'mcap'):
+        base_w, ours_w = best[('base_w', st)], best[('ours_w', st)]
+        base_rr, ours_r = best[('base_rr', st)], best[('ours_r', st)]
+        print(f'[{st}]')
+        print(f'rosbags Writer (serialize + write)   {rate(base_w):10.0f} msg/s')
+        print(f'rosbag2_py SequentialWriter          {rate(ours_w):10.0f} msg/s  '
+              f'ratio {base_w / ours_w:.2f}')
+        print(f'rosbags in a subscriber (pub -> bag) {rate(base_rr):10.0f} msg/s')
+        print(f'ros2 bag record (publish -> bag)     {rate(ours_r):10.0f} msg/s  '
+              f'ratio {base_rr / ours_r:.2f} (vs bare rosbags Writer {base_w / ours_r:.2f})')
     base_r, base_p, ours_p = best['base_r'], best['base_p'], best['ours_p']
-    rate = lambda s: n / s  # noqa: E731
-    print(f'messages: {n} geometry_msgs/msg/Twist, sqlite3')
-    print(f'rosbags Writer (serialize + write)   {rate(base_w):10.0f} msg/s')
-    print(f'rosbag2_py SequentialWriter          {rate(ours_w):10.0f} msg/s  '
-          f'ratio {base_w / ours_w:.2f}')
-    print(f'rosbags in a subscriber (pub -> bag) {rate(base_rr):10.0f} msg/s')
-    print(f'ros2 bag record (publish -> bag)     {rate(ours_r):10.0f} msg/s  '
-          f'ratio {base_rr / ours_r:.2f} (vs bare rosbags Writer {base_w / ours_r:.2f})')
+    print('[sqlite3]')
     print(f'rosbags Reader (read + deserialize)  {rate(base_r):10.0f} msg/s')
     print(f'rosbags Reader -> publish            {rate(base_p):10.0f} msg/s')
     print(f'ros2 bag play (bag -> subscriber)    {rate(ours_p):10.0f} msg/s  '

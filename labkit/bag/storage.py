@@ -22,6 +22,7 @@ COMMIT_EVERY_MESSAGES = 1000
 COMMIT_EVERY_SECONDS = 0.2     # wall time: what a dying kernel may lose at most
 MIN_SPLIT_FILE_SIZE = {'sqlite3': 86016, 'mcap': 1024}   # each Humble plugin's minimum
 CACHE_WAIT_SECONDS = 0.1       # the writer thread looks at least this often (mcap chunk age)
+WAKE_AT_MESSAGES = 1000        # ... and at once when this many messages wait
 METADATA_EVERY_SECONDS = 0.5   # metadata.yaml follows the committed batches (see read)
 
 _SCHEMA = (
@@ -85,6 +86,12 @@ class _SqliteFile:
             return True
         return False
 
+    def write_many(self, rows):
+        """(topic id, timestamp, data) rows from the writer thread's batch."""
+        self._rows.extend((t, i, d) for i, t, d in rows)
+        if len(self._rows) >= COMMIT_EVERY_MESSAGES:
+            self.commit()
+
     def tick(self):
         if self._rows and time.monotonic() - self._last_commit >= COMMIT_EVERY_SECONDS:
             self.commit()
@@ -128,6 +135,11 @@ class _McapFile:
         self.writer.write(topic_id, timestamp, bytes(data))
         return False
 
+    def write_many(self, rows):
+        write = self.writer.write
+        for topic_id, timestamp, data in rows:
+            write(topic_id, timestamp, data)
+
     def tick(self):
         self.writer.flush_if_old()
 
@@ -153,6 +165,14 @@ class _FileStats:
         self.end = None
         self.count = 0
 
+    def add_many(self, stamps):
+        low, high = min(stamps), max(stamps)
+        if self.start is None or low < self.start:
+            self.start = low
+        if self.end is None or high > self.end:
+            self.end = high
+        self.count += len(stamps)
+
     def add(self, timestamp):
         self.count += 1
         if self.start is None or timestamp < self.start:
@@ -169,7 +189,11 @@ class _FileStats:
 class MessageCache:
     """rosbag2_cpp's message cache: callbacks push into one buffer while the writer thread
     empties the other (they swap). A buffer holding `max_bytes` or more drops what comes
-    next until the swap, counting per topic; close() reports the losses as rosbag2 does."""
+    next until the swap, counting per topic; close() reports the losses as rosbag2 does.
+
+    rosbag2 wakes its writer for every message; a Python thread woken 1000 times a second
+    costs more than the writing, so the writer here sleeps until WAKE_AT_MESSAGES are
+    waiting, half the cache is used, or CACHE_WAIT_SECONDS have passed."""
 
     def __init__(self, max_bytes):
         self.max_bytes = max_bytes
@@ -178,7 +202,11 @@ class MessageCache:
         self.bytes = 0
         self.full = False
         self.flushing = False
+        self.sleeping = False
         self.dropped = {}          # topic -> messages lost
+
+    def _enough(self):
+        return len(self.buffer) >= WAKE_AT_MESSAGES or 2 * self.bytes >= self.max_bytes
 
     def push(self, topic, data, timestamp):
         with self.cond:
@@ -188,13 +216,16 @@ class MessageCache:
                 self.buffer.append((topic, data, timestamp))
                 self.bytes += len(data)
                 self.full = self.bytes >= self.max_bytes
-            self.cond.notify()
+            if self.sleeping and self._enough():
+                self.cond.notify()
 
     def swap(self, timeout):
         """The writer thread's turn: everything pushed so far (waits up to `timeout` for it)."""
         with self.cond:
-            if not self.buffer and not self.flushing:
+            if not self.flushing and not self._enough():
+                self.sleeping = True
                 self.cond.wait(timeout)
+                self.sleeping = False
             batch, self.buffer, self.bytes, self.full = self.buffer, [], 0, False
             return batch
 
@@ -324,6 +355,21 @@ class BagWriter:
         if committed and time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
             self._refresh_metadata()
 
+    def _write_batch(self, batch):
+        """_write_now for a whole batch, when no split can come in between."""
+        topics, rows, stamps = self.topics, [], []
+        for topic_name, data, timestamp in batch:
+            entry = topics.get(topic_name)
+            if entry is not None:
+                entry[1].message_count += 1
+                rows.append((entry[0], timestamp, data))
+                stamps.append(timestamp)
+        if rows:
+            self.file.write_many(rows)
+            self.files[-1].add_many(stamps)
+            if time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
+                self._refresh_metadata()
+
     def _consume(self):
         """The writer thread (rosbag2_cpp's CacheConsumer): swap, write, repeat; the last
         round after close() began empties the cache."""
@@ -332,8 +378,11 @@ class BagWriter:
         while True:
             batch = cache.swap(CACHE_WAIT_SECONDS)
             with self._lock:
-                for topic_name, data, timestamp in batch:
-                    self._write_now(topic_name, data, timestamp)
+                if self.max_size or self.max_duration_ns:
+                    for topic_name, data, timestamp in batch:
+                        self._write_now(topic_name, data, timestamp)
+                elif batch:
+                    self._write_batch(batch)
                 self.file.tick()       # a sqlite3 batch or an mcap chunk that waited too long
             if last:
                 return
