@@ -527,6 +527,11 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
         while '/talker' not in labkit.ros2('node list').stdout and time.monotonic() < end:
             time.sleep(0.1)
         print(labkit.ros2('node list').stdout, end='')
+        from labkit.exercises import Checker
+        check = Checker('remote')
+        check.node('/talker')
+        check.topic('/chatter', 'std_msgs/msg/String', publishers=1)
+        print('checker passed', check.passed)
         print(labkit.ros2('disconnect').stdout, end='')
         print(repr(labkit.ros2('node list').stdout), os.environ.get('ROS_DOMAIN_ID'))
         labkit.connect({domain})
@@ -543,6 +548,7 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
         talker.terminate()
         finish(talker)
     assert nb.stdout == (f"joined DDS domain {domain} (this computer only)\n/talker\n"
+                         "checker passed True\n"
                          f"left DDS domain {domain}\n'' None\nconnected after reset False\n"), nb
 
 
