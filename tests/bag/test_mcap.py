@@ -196,3 +196,26 @@ def test_info_on_a_killed_mcap_without_metadata_reads_the_file(bag_dir):
     r = labkit.ros2('bag info cut')
     assert r.returncode == 0, r.stderr
     assert 'Messages:          30\n' in r.stdout and 'reindex' not in r.stderr
+
+
+def test_split_mcap_by_duration_like_sqlite3(bag_dir):
+    from labkit.bag.metadata import read_metadata
+    String = ifc.get_type('std_msgs/msg/String')
+    from labkit.bag import rosbag2_py
+    writer = rosbag2_py.SequentialWriter()
+    writer.open(rosbag2_py.StorageOptions(uri='split', storage_id='mcap',
+                                          max_bagfile_duration=1),
+                rosbag2_py.ConverterOptions('', ''))
+    writer.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
+    for k in range(8):  # 0.0 .. 3.5 s
+        writer.write('/c', ifc.serialize(String(data=str(k))), k * 500_000_000)
+    writer.close()
+    m = read_metadata('split')
+    assert m.relative_file_paths == ['split_0.mcap', 'split_1.mcap', 'split_2.mcap']
+    assert [f.message_count for f in m.files] == [3, 3, 2]
+    with Reader('split') as reader:
+        assert [ifc.deserialize(d, String).data for _, _, d in reader.messages()] == \
+            [str(k) for k in range(8)]
+    for k, name in enumerate(m.relative_file_paths):
+        with open(os.path.join('split', name), 'rb') as f:
+            assert len(list(make_reader(f).iter_messages())) == [3, 3, 2][k]
