@@ -355,6 +355,14 @@ class BagWriter:
         if committed and time.monotonic() - self._metadata_written >= METADATA_EVERY_SECONDS:
             self._refresh_metadata()
 
+    def _write_all(self, batch):
+        """What the cache handed over: at once, or one by one when a split may come between."""
+        if self.max_size or self.max_duration_ns:
+            for topic_name, data, timestamp in batch:
+                self._write_now(topic_name, data, timestamp)
+        elif batch:
+            self._write_batch(batch)
+
     def _write_batch(self, batch):
         """_write_now for a whole batch, when no split can come in between."""
         topics, rows, stamps = self.topics, [], []
@@ -378,18 +386,17 @@ class BagWriter:
         while True:
             batch = cache.swap(CACHE_WAIT_SECONDS)
             with self._lock:
-                if self.max_size or self.max_duration_ns:
-                    for topic_name, data, timestamp in batch:
-                        self._write_now(topic_name, data, timestamp)
-                elif batch:
-                    self._write_batch(batch)
+                self._write_all(batch)
                 self.file.tick()       # a sqlite3 batch or an mcap chunk that waited too long
             if last:
                 return
             last = cache.flushing
 
     def flush(self):
+        """Everything written so far on disk (the cache's waiting messages too)."""
         with self._lock:
+            if self.cache is not None:
+                self._write_all(self.cache.swap(0))
             getattr(self.file, 'settle', self.file.commit)()
             self._refresh_metadata()
 

@@ -85,3 +85,24 @@ def test_without_a_cache_nothing_is_dropped_or_reported(tmp_path, capsys):
     bag.close()
     assert bag.cache is None and bag.metadata().message_count == 500
     assert 'Cache buffers' not in capsys.readouterr().err
+
+
+def test_python_writer_with_a_cache_flushes_it_on_shutdown(bag_dir):
+    """rosbag2_py with StorageOptions(max_cache_size=...): the cache and its writer thread,
+    emptied when the process's rclpy shuts down (a real writer's destructor)."""
+    import labkit.interfaces as ifc
+    import labkit.rclpy as rclpy
+    from labkit.bag import rosbag2_py
+    from labkit.bag.storage import read_bag_metadata
+    String = ifc.get_type('std_msgs/msg/String')
+    rclpy.init()
+    writer = rosbag2_py.SequentialWriter()
+    writer.open(rosbag2_py.StorageOptions(uri='cached', storage_id='mcap',
+                                          max_cache_size=1 << 20),
+                rosbag2_py.ConverterOptions('', ''))
+    writer.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
+    for k in range(300):
+        writer.write('/c', ifc.serialize(String(data=str(k))), 1000 + k)
+    assert writer._bag.cache is not None
+    rclpy.shutdown()
+    assert read_bag_metadata('cached').message_count == 300

@@ -1,4 +1,5 @@
-"""rosbag2_py._writer: SequentialWriter (write-through; metadata.yaml when closed)."""
+"""rosbag2_py._writer: SequentialWriter (write-through unless StorageOptions.max_cache_size;
+metadata.yaml when closed)."""
 import threading
 import weakref
 
@@ -16,7 +17,8 @@ class SequentialWriter:
                 self._bag.close()
             self._bag = BagWriter(storage_options.uri, storage_options.storage_id,
                                   storage_options.max_bagfile_size,
-                                  storage_options.max_bagfile_duration)
+                                  storage_options.max_bagfile_duration,
+                                  storage_options.max_cache_size)
         self._flush_on_shutdown()
 
     def _flush_on_shutdown(self):
