@@ -2,7 +2,8 @@
 the `rosbag2_py` API, and the `ros2 bag record|info|play` verbs.
 
 Layer 4: written on the public rclpy API only. Modules: metadata (structs,
-metadata.yaml, info text), storage (sqlite3/mcap writers and readers),
+metadata.yaml, info text), storage (sqlite3/mcap writers and readers, the message
+cache and its writer thread), mcap_file (the MCAP format, and recovery of a cut file),
 rosbag2_py (the Python API), recorder/player (the transport), cli (the verbs).
 """
 

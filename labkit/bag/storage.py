@@ -1,8 +1,10 @@
 """Bag storage: Humble's sqlite3 plugin (schema 3) and mcap plugin (mcap_file.py).
 
 A bag is a folder `<name>/` with `<name>_0.db3` (or `.mcap`) and `metadata.yaml`.
-The sqlite3 writer writes through and commits in small batches, so a recording
-whose process dies keeps what it had written; metadata.yaml comes at close().
+The sqlite3 writer commits in small batches and the mcap writer closes a chunk at
+least every half second, so a recording whose process dies keeps what it had written
+(`ros2 bag reindex` makes it whole); metadata.yaml comes at close(). `ros2 bag record`
+writes through rosbag2's message cache and a writer thread (MessageCache, BagWriter).
 """
 import os
 import sqlite3
