@@ -192,6 +192,9 @@ def reference():
 def start(side, role, domain):
     env = dict(os.environ, PYTHONUNBUFFERED='1', ROS_DOMAIN_ID=str(domain),
                ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST')
+    if side == 'real-udp':     # Fast DDS without its shared-memory transport, as labkit talks
+        side, env['FASTDDS_BUILTIN_TRANSPORTS'] = 'real', 'UDPv4'
+
     if side == 'labkit':
         env.update(PYTHONPATH=str(REPO), LABKIT_TIME='live', LABKIT_DDS='on', ROS_DISTRO='jazzy')
         argv = [sys.executable, '-m', 'labkit', 'exec', __file__, '--role', role]
@@ -225,14 +228,15 @@ def pair(first_side, first_role, second_side, second_role):
 
 def image_rows():
     print('640x480 bgr8 Image at 30 Hz for 3 s:')
-    for src, dst in (('labkit', 'real'), ('real', 'real'), ('real', 'labkit'),
-                     ('labkit', 'labkit')):
+    for src, dst in (('labkit', 'real'), ('real', 'real'), ('real-udp', 'real-udp'),
+                     ('real', 'labkit'), ('labkit', 'labkit')):
         try:
             got, _ = pair(dst, 'image_sink', src, 'image_source')
         except RuntimeError as e:
             print(f'  {src:>6} -> {dst:<6} failed: {str(e).splitlines()[0]}')
             continue
-        print(f'  {src:>6} -> {dst:<6} {got["received"]}/90 frames, {90 - got["received"]} lost')
+        print(f'  {src:>8} -> {dst:<8} {got["received"]}/90 frames, '
+              f'{90 - got["received"]} lost')
 
 
 def main():
