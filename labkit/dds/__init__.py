@@ -119,6 +119,9 @@ def disconnect():
         b.close()
 
 
+QUIET_S = 0.3
+
+
 def settle_discovery(seconds=0.5, longest=4.0):
     """Give discovery a moment (ros2cli's direct node spins 0.5 s for the same reason),
     and up to `longest` for peers whose node list has not arrived yet (a Fast DDS
@@ -130,7 +133,12 @@ def settle_discovery(seconds=0.5, longest=4.0):
     start = time.monotonic()
     while True:
         time.sleep(0.05)
-        waited = time.monotonic() - start
-        if waited >= longest or (waited >= seconds and not b.missing_infos()):
+        now = time.monotonic()
+        waited = now - start
+        if waited >= longest:
+            break
+        # done when nothing new arrived for a moment and every peer's node list is in
+        if (waited >= seconds and now - b.last_discovery >= QUIET_S
+                and not b.missing_infos()):
             break
     b.sync()

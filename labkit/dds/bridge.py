@@ -16,6 +16,7 @@ import os
 import random
 import sys
 import threading
+import time
 
 
 from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI
@@ -68,6 +69,7 @@ class Bridge:
         self._mask = _mask()
         self._stop = False
         self._dirty = True
+        self.last_discovery = time.monotonic()   # when discovery last brought news
         self._lock = threading.RLock()
         self._domain = Domain(domain_id, config.cyclone_xml(localhost))
         self.participant = DomainParticipant(domain_id)
@@ -330,6 +332,7 @@ class Bridge:
                 self._infos[participant] = nodes
                 changed = True
         if changed:
+            self.last_discovery = time.monotonic()
             self._rebuild_remote()
 
     def _follow_peer_layout(self):
