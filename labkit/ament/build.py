@@ -13,6 +13,7 @@ import os
 import shutil
 
 from labkit.ament import cmake, envscripts, setup_py
+from labkit.ament.files import write_text as _write
 
 PYTHON_DIR = os.path.join('lib', 'python3.10', 'site-packages')
 RESOURCE_INDEX = os.path.join('share', 'ament_index', 'resource_index')
@@ -54,16 +55,6 @@ class Context:
 
 
 # ------------------------------------------------------------------ small file helpers
-
-def _write(path, text, mode=None):
-    os.makedirs(os.path.dirname(path), exist_ok=True)
-    if os.path.islink(path):
-        os.unlink(path)
-    with open(path, 'w', encoding='utf-8') as f:
-        f.write(text)
-    if mode is not None:
-        os.chmod(path, mode)
-
 
 def _place(src, dst, symlink):
     """Copy a file (or symlink it with --symlink-install), replacing what was there."""

@@ -91,6 +91,18 @@ def display_abspath(path):
 
 # ----------------------------------------------------------------------------- shell commands
 
+def write_text(path, text, mode=None):
+    """Write a generated file (its folders made first), replacing a symlink left
+    by --symlink-install instead of writing through it."""
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    if os.path.islink(path):
+        os.unlink(path)
+    with open(path, 'w', encoding='utf-8') as f:
+        f.write(text)
+    if mode is not None:
+        os.chmod(path, mode)
+
+
 def mkdir(*paths):
     """`mkdir -p PATH...`"""
     for path in paths:
