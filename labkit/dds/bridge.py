@@ -72,7 +72,8 @@ class Bridge:
         self.last_discovery = time.monotonic()   # when discovery last brought news
         self._lock = threading.RLock()
         self._domain = Domain(domain_id, config.cyclone_xml(localhost))
-        self.participant = DomainParticipant(domain_id)
+        # rmw puts the security enclave in the participant's user data
+        self.participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
         self.guid = self.participant.guid.bytes
         self._topics = {}
         self._mirrors = {}            # local Endpoint -> _Mirror
