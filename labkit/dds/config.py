@@ -70,6 +70,10 @@ def cyclone_xml(localhost=True):
                      + peers)
     return ("<CycloneDDS><Domain Id=\"any\"><General>" + general + "</General>"
             "<Discovery>" + discovery + "</Discovery>"
+            # a writer's unacknowledged history may hold whole images: Cyclone's default
+            # high watermark (500 kB) is below one 640x480 frame, so every second write
+            # blocked for max_blocking_time and then failed (a lost frame)
+            "<Internal><Watermarks><WhcHigh>32MB</WhcHigh></Watermarks></Internal>"
             "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
 
 
