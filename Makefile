@@ -16,18 +16,14 @@ setup: $(STAMP) rosref
 ROSREF       := .venv-rosref
 ROSREF_STAMP := $(ROSREF)/.installed
 ROSREF_PY    ?= $(shell command -v python3.11 || command -v python3.12 || echo python3)
-ROSREF_PKGS  := "ros-jazzy-rclpy[fastrtps]==7.1.6" ros-jazzy-rmw-fastrtps-cpp ros-jazzy-std-msgs \
-	ros-jazzy-geometry-msgs ros-jazzy-std-srvs ros-jazzy-rcl-interfaces ros-jazzy-action-msgs \
-	ros-jazzy-sensor-msgs ros-jazzy-builtin-interfaces ros-jazzy-nav-msgs \
-	ros-jazzy-rosgraph-msgs ros-jazzy-test-msgs
 
 .PHONY: rosref
 rosref: $(ROSREF_STAMP)
 
-$(ROSREF_STAMP): Makefile
+$(ROSREF_STAMP): requirements-rosref.lock
 	test -x $(ROSREF)/bin/python || $(ROSREF_PY) -m venv $(ROSREF)
 	$(ROSREF)/bin/pip install -q --upgrade pip
-	$(ROSREF)/bin/pip install -q $(ROSREF_PKGS)
+	$(ROSREF)/bin/pip install -q -r requirements-rosref.lock
 	touch $(ROSREF_STAMP)
 
 $(STAMP): requirements.lock pyproject.toml
