@@ -184,8 +184,8 @@ def _parser():
                            help='Enable or disable event handlers')
             p.add_argument('--executor', default='parallel',
                            choices=['parallel', 'sequential'])
-            p.add_argument('--parallel-workers', type=int, default=os.cpu_count() or 1,
-                           metavar='NUMBER')
+            p.add_argument('--parallel-workers', type=int, default=None,
+                           metavar='NUMBER')     # None: the cores (see workers())
             p.add_argument('--cmake-args', nargs='*', metavar='*',
                            help='Pass arguments to CMake projects')
             p.add_argument('--cmake-target', metavar='CMAKE_TARGET')
@@ -396,18 +396,13 @@ def build_verb(args, io, clock):
         except LookupError:
             return None
 
-    finished, failed, stderr_pkgs, events = [], [], [], []
-    blocked = set()
-    all_deps = workspace.recursive_deps(ordered)
-    for pkg in selected:
-        deps = all_deps[pkg.name]
-        if failed and not args.continue_on_error or deps & blocked:
-            blocked.add(pkg.name)
-            continue
+    finished, failed, aborted, stderr_pkgs, events = [], [], [], [], []
+
+    def start(pkg):
         io.print(f'Starting >>> {pkg.name}')
         events.append(f'[{clock.now():.6f}] (-) JobStarted: {{\'identifier\': '
                       f'\'{pkg.name}\'}}')
-        started = clock.now()
+        measured = time.monotonic()
         ctx = build.Context(pkg, build_base, install_base, args.symlink_install,
                             is_installed)
         builder = {'ament_python': build.build_ament_python,
@@ -422,7 +417,21 @@ def build_verb(args, io, clock):
                 res = builder(ctx)
             except Exception as e:     # a labkit bug: fail this package, say why
                 res = build.BuildResult().fail(f'{type(e).__name__}: {e}')
-        clock.add(res.cost or 0.3)     # a failed step still took a moment
+        _write_package_log(log_dir, pkg.name, res)
+        # a failed step still took a moment: CMake fails in its configure step (about as
+        # long as the cost model's base for a CMake package), setup.py at once
+        failed_cost = 1.45 if pkg.build_type in ('ament_cmake', 'cmake') else 0.3
+        took = (res.cost or failed_cost) if clock.virtual else time.monotonic() - measured
+        return took, res.returncode, res
+
+    def end(pkg, res, took, was_aborted):
+        took = format_duration(max(took, 0.0))
+        if was_aborted:     # cancelled by another package's failure
+            aborted.append(pkg.name)
+            io.print(f'Aborted  <<< {pkg.name} [{took}]')
+            events.append(f'[{clock.now():.6f}] ({pkg.name}) JobEnded: {{\'identifier\': '
+                          f'\'{pkg.name}\', \'rc\': \'SIGINT\'}}')
+            return
         for warning in res.warnings:
             io.eprint(f'[{clock.now():.3f}s] {warning}')
         if direct:
@@ -438,17 +447,16 @@ def build_verb(args, io, clock):
             for line in res.stderr:
                 io.eprint(line)
             io.eprint('---')
-        took = format_duration(max(clock.now() - started, 0.0))
-        _write_package_log(log_dir, pkg.name, res)
         if res.returncode:
             failed.append((pkg.name, res.returncode))
-            blocked.add(pkg.name)
             io.print(f'Failed   <<< {pkg.name} [{took}, exited with code {res.returncode}]')
         else:
             finished.append(pkg.name)
             io.print(f'Finished <<< {pkg.name} [{took}]')
         events.append(f'[{clock.now():.6f}] ({pkg.name}) JobEnded: {{\'identifier\': '
                       f'\'{pkg.name}\', \'rc\': {res.returncode}}}')
+
+    not_processed = execute(args, ordered, selected, clock, start, end)
 
     clock.add(0.25)     # discovery, ordering and the summary itself
     _write_install_scripts(install_base, [p for p in ordered if os.path.isdir(
@@ -458,13 +466,98 @@ def build_verb(args, io, clock):
     io.print(f'Summary: {_plural(len(finished))} finished [{format_duration(clock.now())}]')
     if failed:
         io.print(f'  {_plural(len(failed))} failed: ' + ' '.join(sorted(n for n, _ in failed)))
+    if aborted:
+        io.print(f'  {_plural(len(aborted))} aborted: ' + ' '.join(sorted(aborted)))
     if stderr_pkgs:
         io.print(f'  {_plural(len(stderr_pkgs))} had stderr output: ' +
                  ' '.join(sorted(stderr_pkgs)))
-    not_processed = blocked - {n for n, _ in failed}
     if not_processed:
         io.print(f'  {_plural(len(not_processed))} not processed')
     return failed[0][1] if failed else 0
+
+
+# ------------------------------------------------------------------ executors
+
+# The machine the book's virtual time stands for has 2 cores: colcon's default
+# --parallel-workers (os.cpu_count()) is 2 there, whatever this computer has.
+VIRTUAL_CORES = 2
+
+
+def workers(args):
+    """How many packages may be processed at once (0: no limit), as the executor reads it."""
+    if getattr(args, 'executor', 'parallel') == 'sequential':
+        return 1
+    if args.parallel_workers is not None:
+        return args.parallel_workers
+    from labkit.graph import world
+    return VIRTUAL_CORES if world.mode() == 'virtual' else os.cpu_count() or 1
+
+
+def execute(args, ordered, selected, clock, start, end, on_error=None):
+    """Process the selected packages in the order colcon's executor does; the names not
+    processed (blocked by a failure).
+
+    colcon-parallel-executor starts every ready package (all its selected dependencies
+    finished), those with more dependents first, up to --parallel-workers at a time, and
+    reports each one when it ends; the sequential executor takes them one by one in
+    topological order. labkit runs a package's job when it starts (its dependencies are
+    done by then) and holds its end back until its duration has passed on a timeline:
+    so `Starting >>> b` comes before `Finished <<< a` when both run at once.
+
+    `start(pkg)` runs the job and returns (duration, rc, payload); `end(pkg, payload,
+    duration, aborted)` reports it, with clock.now() at its end (virtual time).
+    `on_error` (colcon's OnError): 'interrupt' aborts the running jobs and skips the
+    pending ones (colcon build's default), 'skip_downstream' skips the failed package's
+    dependents (build --continue-on-error), 'continue' goes on (colcon test's default).
+    """
+    parallel = getattr(args, 'executor', 'parallel') != 'sequential'
+    limit = workers(args)
+    if on_error is None:
+        on_error = 'skip_downstream' if args.continue_on_error else 'interrupt'
+    names = {p.name for p in selected}
+    all_deps = workspace.recursive_deps(ordered)
+    deps = {p.name: all_deps[p.name] & names - {p.name} for p in selected}
+    dependents = {n: sum(n in deps[m] for m in names if m != n) for n in names}
+    pending = list(selected)
+    running = []                # [end time, sequence, pkg, started, duration, rc, payload]
+    now, sequence = clock.now(), 0
+    blocked = set()
+    while pending or running:
+        waiting = {p.name for p in pending} | {r[2].name for r in running}
+        ready = [p for p in pending if not deps[p.name] & waiting]
+        if parallel:
+            ready.sort(key=lambda p: -dependents[p.name])     # stable: topological
+        for pkg in ready:
+            if limit and len(running) >= limit:
+                break
+            pending.remove(pkg)
+            if clock.virtual:
+                clock.model = now
+            duration, rc, payload = start(pkg)
+            running.append([now + duration, sequence, pkg, now, duration, rc, payload])
+            sequence += 1
+        if not running:
+            break
+        running.sort(key=lambda r: (r[0], r[1]))
+        done = running.pop(0)
+        now = done[0]
+        if clock.virtual:
+            clock.model = now
+        end(done[2], done[6], done[4], False)
+        if done[5] and on_error != 'continue':
+            if on_error == 'interrupt':
+                blocked |= {p.name for p in pending}
+                pending = []
+                for other in running:       # cancelled when the failure is seen
+                    end(other[2], other[6], now - other[3], True)
+                running = []
+            else:
+                downstream = {p.name for p in pending if done[2].name in deps[p.name]}
+                blocked |= downstream
+                pending = [p for p in pending if p.name not in downstream]
+    if clock.virtual:
+        clock.model = now
+    return blocked
 
 
 # ------------------------------------------------------------------ files colcon leaves

@@ -66,8 +66,11 @@ def add_arguments(parser, verb):
                             help='Enable or disable event handlers')
         parser.add_argument('--executor', default='parallel',
                             choices=['parallel', 'sequential'])
-        parser.add_argument('--parallel-workers', type=int, default=os.cpu_count() or 1,
-                            metavar='NUMBER')
+        parser.add_argument('--parallel-workers', type=int, default=None,
+                            metavar='NUMBER')     # None: the cores (colcon.workers())
+        parser.add_argument('--abort-on-error', action='store_true',
+                            help='Abort after the first package with any errors (failing '
+                                 'tests are not considered errors in this context)')
         parser.add_argument('--return-code-on-test-failure', action='store_true',
                             help='Use a non-zero return code to indicate any test failure')
         parser.add_argument('--pytest-args', nargs='*', metavar='*',
@@ -91,10 +94,10 @@ def add_arguments(parser, verb):
 
 def test_verb(args, io, clock):
     from labkit.ament import build
-    from labkit.ament.colcon import _plural, _select, format_duration
+    from labkit.ament.colcon import _plural, _select, execute, format_duration
     build_base = os.path.abspath(args.build_base)
     install_base = os.path.abspath(args.install_base)
-    _, selected = _select(args, io, clock, (build_base, install_base,
+    ordered, selected = _select(args, io, clock, (build_base, install_base,
                                             os.path.abspath(args.log_base)))
     direct = any(h.startswith('console_direct+') or h.startswith('console_cohesion+')
                  for h in args.event_handlers)
@@ -103,10 +106,10 @@ def test_verb(args, io, clock):
         for name in (os.listdir(install_base) if os.path.isdir(install_base) else ())
         if os.path.isdir(os.path.join(install_base, name, build.PYTHON_DIR)))
 
-    finished, failed, with_failures, stderr_pkgs = [], [], [], []
-    for pkg in selected:
+    finished, failed, aborted, with_failures, stderr_pkgs = [], [], [], [], []
+
+    def start(pkg):
         io.print(f'Starting >>> {pkg.name}')
-        started = clock.now()
         result_base = os.path.join(os.path.abspath(args.test_result_base or args.build_base),
                                    pkg.name)
         if pkg.build_type == 'ament_python':
@@ -114,7 +117,17 @@ def test_verb(args, io, clock):
                                              args.pytest_args or [])
         else:
             rc, out, err, cost = 0, [], [], 0.2    # ctest: nothing compiled, nothing to run
-        clock.add(cost)
+        # pytest's "tests failed" and "no tests" are not the job's failure
+        job_rc = 0 if rc in (0, PYTEST_TESTS_FAILED, PYTEST_NO_TESTS) else rc
+        return cost, job_rc, (rc, out, err)
+
+    def end(pkg, payload, took, was_aborted):
+        rc, out, err = payload
+        took = format_duration(max(took, 0.0))
+        if was_aborted:
+            aborted.append(pkg.name)
+            io.print(f'Aborted  <<< {pkg.name} [{took}]')
+            return
         if direct:
             for line in out:
                 io.print(line)
@@ -124,11 +137,10 @@ def test_verb(args, io, clock):
             for line in err:
                 io.eprint(line)
             io.eprint('---')
-        took = format_duration(max(clock.now() - started, 0.0))
         if rc not in (0, PYTEST_TESTS_FAILED, PYTEST_NO_TESTS):
             failed.append(pkg.name)
             io.eprint(f'Failed   <<< {pkg.name} [{took}, exited with code {rc}]')
-            continue
+            return
         finished.append(pkg.name)
         line = f'Finished <<< {pkg.name} [{took}]'
         if rc == PYTEST_TESTS_FAILED:
@@ -136,13 +148,19 @@ def test_verb(args, io, clock):
             line += '\t[ with test failures ]'
         io.print(line)
 
+    not_processed = execute(args, ordered, selected, clock, start, end,
+                            'interrupt' if args.abort_on_error else 'continue')
+
     clock.add(0.2)
     io.print('')
     io.print(f'Summary: {_plural(len(finished))} finished [{format_duration(clock.now())}]')
-    for names, what in ((failed, 'failed'), (stderr_pkgs, 'had stderr output'),
+    for names, what in ((failed, 'failed'), (aborted, 'aborted'),
+                        (stderr_pkgs, 'had stderr output'),
                         (with_failures, 'had test failures')):
         if names:
             io.print(f'  {_plural(len(names))} {what}: ' + ' '.join(sorted(names)))
+    if not_processed:
+        io.print(f'  {_plural(len(not_processed))} not processed')
     if failed:
         return 1
     return 1 if with_failures and args.return_code_on_test_failure else 0
@@ -207,9 +225,40 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
     return done.returncode, out, err, cost
 
 
+# The `plugins:` line of pytest's header on a Humble desktop machine: the pytest11 entry
+# points of ros-humble-launch-testing-ros, ament_lint's linters, launch-testing and
+# python3-colcon-core. Names, versions and their order are copied from a real Humble log
+# of the same pytest 6.2.5 / py 1.10.0 (a `colcon test` of an ament_python package, late
+# 2023); other Humble machines list the same plugins in another order or with later patch
+# versions (a sync bumps them), and with ament-mypy when that package is installed.
+HUMBLE_PLUGINS = ('plugins: launch-testing-ros-0.19.7, ament-xmllint-0.12.10, '
+                  'ament-copyright-0.12.10, ament-lint-0.12.10, ament-pep257-0.12.10, '
+                  'launch-testing-1.0.4, ament-flake8-0.12.10, colcon-core-0.15.2')
+# Python 3.11+ underlines the failing expression in a traceback (^^^^, ~~~^~~~); 3.10 not
+CARETS = re.compile(r'^\s*[~^]*\^[~^]*\s*$')
+
+
 def _lines(text, cost, virtual):
-    shown = (_shown(line, cost, virtual) for line in text.splitlines())
-    return [line for line in shown if line is not None]
+    """pytest's output as Jammy's pytest 6.2.5 on Python 3.10 prints it."""
+    result = []
+    for line in text.splitlines():
+        if CARETS.match(line):
+            continue
+        line = _shown(line, cost, virtual)
+        if line is None:
+            continue
+        # pytest 6 prints the config file and testpaths on the rootdir line
+        if line.startswith(('configfile: ', 'testpaths: ')) and result and \
+                result[-1].startswith('rootdir: '):
+            result[-1] += ', ' + line
+            continue
+        if virtual and line.startswith('plugins: '):
+            continue        # this Python's own plugins (none: autoload is off)
+        if virtual and result and result[-1].startswith('rootdir: ') and \
+                HUMBLE_PLATFORM in result[-3:-1]:
+            result.append(HUMBLE_PLUGINS)
+        result.append(line)
+    return result
 
 
 def _counts(junit):

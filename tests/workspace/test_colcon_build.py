@@ -14,8 +14,9 @@ def test_build_order_output_and_layout(facer):
     assert r.returncode == 0, r.text()
     lines = r.stdout.splitlines()
     starts = [line.split()[-1] for line in lines if line.startswith('Starting >>> ')]
-    # colcon's order: waves of packages whose dependencies are done, alphabetical in a wave
-    assert starts == ['facer_input', 'facer_interfaces', 'facer_detect', 'facer_bringup']
+    # colcon-parallel-executor: of the ready packages, those with more dependents start
+    # first (facer_interfaces: 2, facer_input: 1), then the topological order
+    assert starts == ['facer_interfaces', 'facer_input', 'facer_detect', 'facer_bringup']
     assert any(line.startswith('Finished <<< facer_interfaces [') for line in lines)
     assert lines[-2].startswith('Summary: 4 packages finished [')
     # Jammy's setuptools warns in every ament_python package, as on a real Humble machine

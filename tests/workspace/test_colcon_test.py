@@ -114,3 +114,37 @@ def test_pytest_that_cannot_start_fails_the_package(ws):
     # colcon's placeholder result is left where pytest wrote none
     assert colcon.run_command('test-result').stdout.startswith(
         'build/my_pkg/pytest.xml: 1 test, 1 error, 0 failures, 0 skipped')
+
+
+def test_independent_packages_are_tested_side_by_side(ws):
+    # my_pkg has one test more than other_pkg: its pytest runs longer, it ends last
+    make_pkg(ws, tests=(('test_calc.py', GOOD), ('test_bad.py', BAD)))
+    make_pkg(ws, 'other_pkg')
+    assert colcon.run_command('build').returncode == 0
+    r = colcon.run_command('test')
+    order = [line.split(' [')[0] for line in r.stdout.splitlines() if '<<<' in line or '>>>' in line]
+    assert order == ['Starting >>> my_pkg', 'Starting >>> other_pkg',
+                     'Finished <<< other_pkg', 'Finished <<< my_pkg']
+    r = colcon.run_command('test --executor sequential')
+    order = [line.split(' [')[0] for line in r.stdout.splitlines() if '<<<' in line or '>>>' in line]
+    assert order == ['Starting >>> my_pkg', 'Finished <<< my_pkg',
+                     'Starting >>> other_pkg', 'Finished <<< other_pkg']
+
+
+def test_pytest_output_is_jammys(ws):
+    # what `--event-handlers console_direct+` shows: pytest 6.2.5 on Python 3.10
+    raises = ('from my_pkg.calc import add\n\n\ndef test_add_none():\n'
+              '    assert add(2, None) == 2\n')
+    make_pkg(ws, tests=(('test_bad.py', BAD), ('test_raises.py', raises)))
+    assert colcon.run_command('build').returncode == 0
+    r = colcon.run_command('test --event-handlers console_direct+')
+    assert '    return a + b\nE   TypeError: unsupported operand' in r.stdout
+    lines = r.stdout.splitlines()
+    platform = lines.index('platform linux -- Python 3.10.12, pytest-6.2.5, py-1.10.0, '
+                           'pluggy-0.13.0')
+    assert lines[platform + 1].startswith('cachedir: ')
+    assert any(line.startswith('plugins: ') and 'ament-flake8-' in line and
+               'launch-testing-' in line for line in lines[platform:platform + 5])
+    assert '    assert add(2, 2) == 5' in lines
+    # Python 3.11's carets under the failing line: Python 3.10 prints none
+    assert not any(set(line.strip()) <= {'^', '~'} and line.strip() for line in lines)
