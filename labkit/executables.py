@@ -18,6 +18,12 @@ BUILTIN = {
     ("examples_rclcpp_minimal_subscriber", "subscriber_member_function"):
         "labkit.demos.minimal:subscriber_main",
     ("rqt_graph", "rqt_graph"): "labkit.viz.graph_view:main",
+    **{("examples_rclpy_minimal_publisher", f"publisher_{style}"):
+       "labkit.demos.minimal_py:publisher_main"
+       for style in ("local_function", "member_function", "old_school")},
+    **{("examples_rclpy_minimal_subscriber", f"subscriber_{style}"):
+       "labkit.demos.minimal_py:subscriber_main"
+       for style in ("lambda", "member_function", "old_school")},
 }
 
 # Which of the real executables labkit stands in for are C++ programs (rclcpp): when one

@@ -73,7 +73,16 @@ def get_resources(resource_type):
 
 
 def bundled_package_names():
-    """Packages labkit itself provides (executables, bundled interfaces and manifests)."""
+    """Packages labkit itself provides (executables, bundled interfaces and manifests).
+
+    Of the packages ros-humble-desktop depends on (ros2/variants, humble), labkit lists
+    those whose executables it really runs: turtlesim, demo_nodes_cpp/_py and the
+    minimal publisher/subscriber examples (examples_rclcpp_* and examples_rclpy_*, each
+    with a package.xml in labkit/ament/prefix). The other examples_* packages of
+    desktop (minimal client/service/action/timer/composition, executors) are not
+    listed: `ros2 run` could not start them. colcon's override check (colcon.py) warns
+    about a workspace package named like any listed one, as desktop depends on it.
+    """
     names = set()
     for prefix in bundled_prefixes():
         names |= set(resources('packages', prefix))

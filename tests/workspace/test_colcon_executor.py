@@ -59,3 +59,42 @@ def test_a_failure_aborts_the_package_running_beside_it(ws):
     r = colcon.run_command('build --continue-on-error')
     assert starts_and_ends(r) == ['Starting >>> pkg_a', 'Starting >>> pkg_b',
                                   'Failed   <<< pkg_a', 'Finished <<< pkg_b']
+
+
+def test_desktop_examples_are_overridden_with_a_warning(ws):
+    # ros-humble-desktop depends on examples_rclpy_minimal_*: building one warns
+    src = str(ws / 'src')
+    for name in ('examples_rclpy_minimal_publisher', 'examples_rclpy_minimal_subscriber'):
+        facer_ws.python_package(src, name, [], deps=[('exec_depend', 'rclpy')])
+    r = colcon.run_command('build')
+    assert r.returncode == 0
+    assert ("WARNING:colcon.colcon_core.package_selection:Some selected packages are "
+            "already built in one or more underlay workspaces:\n"
+            "\t'examples_rclpy_minimal_publisher' is in: /opt/ros/humble\n"
+            "\t'examples_rclpy_minimal_subscriber' is in: /opt/ros/humble\n") in r.stderr
+    assert ('\n\t--allow-overriding examples_rclpy_minimal_publisher '
+            'examples_rclpy_minimal_subscriber\n') in r.stderr
+    r = colcon.run_command('build --allow-overriding examples_rclpy_minimal_publisher '
+                           'examples_rclpy_minimal_subscriber')
+    assert 'underlay workspaces' not in r.stderr
+
+
+def test_desktop_examples_run_from_the_binary_install():
+    import labkit
+    r = labkit.ros2('pkg executables examples_rclpy_minimal_publisher')
+    assert r.stdout.splitlines() == [
+        'examples_rclpy_minimal_publisher publisher_local_function',
+        'examples_rclpy_minimal_publisher publisher_member_function',
+        'examples_rclpy_minimal_publisher publisher_old_school']
+    assert labkit.ros2('pkg prefix examples_rclpy_minimal_subscriber').stdout == \
+        '/opt/ros/humble\n'
+    pub = labkit.ros2('run examples_rclpy_minimal_publisher publisher_member_function')
+    sub = labkit.ros2('run examples_rclpy_minimal_subscriber subscriber_lambda')
+    labkit.sleep(1.6)
+    assert any(line.endswith('[minimal_publisher]: Publishing: "Hello World: 1"')
+               for line in pub.output), pub.output
+    assert any(line.endswith('[minimal_subscriber]: I heard: "Hello World: 1"')
+               for line in sub.output), sub.output
+    pub.stop()
+    sub.stop()
+    labkit.reset()

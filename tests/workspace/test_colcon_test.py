@@ -122,11 +122,13 @@ def test_independent_packages_are_tested_side_by_side(ws):
     make_pkg(ws, 'other_pkg')
     assert colcon.run_command('build').returncode == 0
     r = colcon.run_command('test')
-    order = [line.split(' [')[0] for line in r.stdout.splitlines() if '<<<' in line or '>>>' in line]
+    order = [line.split(' [')[0] for line in r.stdout.splitlines()
+             if '<<<' in line or '>>>' in line]
     assert order == ['Starting >>> my_pkg', 'Starting >>> other_pkg',
                      'Finished <<< other_pkg', 'Finished <<< my_pkg']
     r = colcon.run_command('test --executor sequential')
-    order = [line.split(' [')[0] for line in r.stdout.splitlines() if '<<<' in line or '>>>' in line]
+    order = [line.split(' [')[0] for line in r.stdout.splitlines()
+             if '<<<' in line or '>>>' in line]
     assert order == ['Starting >>> my_pkg', 'Finished <<< my_pkg',
                      'Starting >>> other_pkg', 'Finished <<< other_pkg']
 

@@ -1,0 +1,59 @@
+"""examples_rclpy_minimal_publisher / _subscriber of a Humble desktop install.
+
+The Python twins of examples_rclcpp_minimal_*: same node names and topic, Python's
+texts (`Publishing: "Hello World: 0"`, `I heard: "Hello World: 0"`). The real packages
+have three executables each (member function, local function, "old school"); they
+differ only in how the code is written, not in what a user sees, so all three start
+the same node here.
+"""
+import labkit.rclpy as rclpy
+from labkit.interfaces import module
+from labkit.rclpy.executors import ExternalShutdownException
+from labkit.rclpy.node import Node
+
+String = module('std_msgs.msg').String
+
+
+class Publisher(Node):
+
+    def __init__(self):
+        super().__init__('minimal_publisher')
+        self.sent = 0
+        self.pub = self.create_publisher(String, 'topic', 10)
+        self.create_timer(0.5, self.tick)
+
+    def tick(self):
+        msg = String(data=f'Hello World: {self.sent}')
+        self.pub.publish(msg)
+        self.get_logger().info(f'Publishing: "{msg.data}"')
+        self.sent += 1
+
+
+class Subscriber(Node):
+
+    def __init__(self):
+        super().__init__('minimal_subscriber')
+        self.create_subscription(String, 'topic', self.heard, 10)
+
+    def heard(self, msg):
+        self.get_logger().info(f'I heard: "{msg.data}"')
+
+
+def _spin(node_class, args):
+    rclpy.init(args=args)
+    node = node_class()
+    try:
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+
+def publisher_main(args=None):
+    _spin(Publisher, args)
+
+
+def subscriber_main(args=None):
+    _spin(Subscriber, args)
