@@ -33,7 +33,7 @@ import threading
 from labkit.dds.config import ConfigError
 
 __all__ = ["connect", "disconnect", "current", "is_connected", "ConfigError", "ConnectError",
-           "auto_enabled", "settle_discovery"]
+           "auto_enabled", "settle_discovery", "wait_until"]
 
 _bridge = None
 _lock = threading.Lock()
@@ -137,8 +137,34 @@ def settle_discovery(seconds=0.5, longest=4.0):
         waited = now - start
         if waited >= longest:
             break
-        # done when nothing new arrived for a moment and every peer's node list is in
+        # done when nothing new arrived for a moment and every peer's node list is in;
+        # while no peer at all has answered, a loaded machine may just be slow to: a
+        # little longer (an empty graph costs LONELY_S more, a busy one nothing)
         if (waited >= seconds and now - b.last_discovery >= QUIET_S
-                and not b.missing_infos()):
+                and not b.missing_infos() and (b.peers() or waited >= seconds + LONELY_S)):
             break
     b.sync()
+
+
+LONELY_S = 1.0
+PATIENCE_S = 8.0
+
+
+def wait_until(cond, longest=PATIENCE_S):
+    """True once cond() holds. A fresh terminal process has not discovered everything
+    when it starts (a real `ros2` verb asks the daemon, which has been listening all
+    along): when connected, a verb that names a node waits for it to appear, up to
+    `longest` seconds; not connected, the in-process graph is complete: no wait."""
+    import time
+    b = _bridge
+    if cond():
+        return True
+    if b is None:
+        return False
+    end = time.monotonic() + longest
+    while time.monotonic() < end:
+        b.wait_news(0.1)
+        b.sync()
+        if cond():
+            return True
+    return False

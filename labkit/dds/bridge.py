@@ -70,6 +70,7 @@ class Bridge:
         self._stop = False
         self._dirty = True
         self.last_discovery = time.monotonic()   # when discovery last brought news
+        self._news = threading.Condition()        # notified when it does
         self._lock = threading.RLock()
         self._domain = Domain(domain_id, config.cyclone_xml(localhost))
         # rmw puts the security enclave in the participant's user data
@@ -335,6 +336,18 @@ class Bridge:
         if changed:
             self.last_discovery = time.monotonic()
             self._rebuild_remote()
+            with self._news:
+                self._news.notify_all()
+
+    def wait_news(self, timeout):
+        """Block until discovery brings something new, or `timeout` seconds."""
+        with self._news:
+            self._news.wait(timeout)
+
+    def peers(self):
+        """The other DDS participants discovered so far."""
+        with self._lock:
+            return list(self._participants)
 
     def _follow_peer_layout(self):
         """A peer speaks the other Gid layout (Humble 24 bytes, Jazzy and later 16): with

@@ -200,7 +200,6 @@ def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, dom
         spin_until(node, lambda: not seen(), 15)   # stay while the real node lives
     """, domain)
     assert lk_prog.stdout.readline().strip() == "published"
-    time.sleep(0.5)
     real_prog = real(tmp_path, "late_sub", """
         from rclpy.qos import QoSProfile, DurabilityPolicy
         from std_msgs.msg import String
@@ -209,18 +208,19 @@ def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, dom
         got = []
         node.create_subscription(String, 'latched', lambda m: got.append(m.data),
                                  QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL))
-        spin_until(node, lambda: got, 10)
-        print('late joiner got', got)
+        spin_until(node, lambda: got, 15)
+        print('late joiner got', got, flush=True)
         spin_until(node, lambda: os.path.exists(DONE), 15)   # until the test has looked
     """.replace("DONE", repr(str(tmp_path / "done"))), domain)
-    time.sleep(1.0)
+    # both are up and have met: the real one got the latched message
+    first = real_prog.stdout.readline()
     listed = labkit_ros2(domain, "node", "list", background=True)
     info = labkit_ros2(domain, "node", "info", "/late_sub", background=True)
     listed, info = done(listed), done(info)
     (tmp_path / "done").touch()
     real_out, real_err = finish(real_prog)
     finish(lk_prog)
-    assert "late joiner got ['published before you came']" in real_out, real_out + real_err
+    assert first == "late joiner got ['published before you came']\n", first + real_out + real_err
     assert "/late_sub\n" in listed.stdout and "/latcher\n" in listed.stdout, listed
     assert "    /latched: std_msgs/msg/String" in info.stdout, info.stdout + info.stderr
     assert "/late_sub/get_parameters: rcl_interfaces/srv/GetParameters" in info.stdout
@@ -228,8 +228,13 @@ def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, dom
 
 REAL_SERVER = """
 from std_srvs.srv import SetBool
-from rcl_interfaces.msg import ParameterDescriptor
 rclpy.init(args=[])
+# the node comes up only once a `labkit ros2` verb's own node is on the graph: that
+# verb has finished its start-up discovery and must wait for /real_server to appear
+watcher = rclpy.create_node('real_watcher')
+cli_seen = lambda: any(n.startswith('_ros2cli') for n, _ in watcher.get_node_names_and_namespaces())
+print('cli seen', spin_until(watcher, cli_seen, 20), flush=True)
+watcher.destroy_node()
 node = rclpy.create_node('real_server')
 node.declare_parameter('speed', 1.5)
 def handle(req, resp):
@@ -246,8 +251,14 @@ spin_until(node, lambda: False, 1.0)
 
 @needs_rosref
 def test_labkit_calls_real_service_and_sets_real_parameters(tmp_path, domain):
+    """`labkit ros2 param get` started before the real node exists finds it once it
+    appears (ros2cli asks its daemon; a fresh labkit process waits, bounded), then a
+    service call and `param set` against the real node."""
+    got = labkit_ros2(domain, "param", "get", "/real_server", "speed", background=True)
     server = real(tmp_path, "real_server", REAL_SERVER, domain)
+    assert server.stdout.readline().strip() == "cli seen True"
     assert server.stdout.readline().strip() == "ready"
+    got = done(got)
     client = labkit(tmp_path, "lk_client", """
         import rclpy
         from std_srvs.srv import SetBool
@@ -260,14 +271,13 @@ def test_labkit_calls_real_service_and_sets_real_parameters(tmp_path, domain):
         print('response', future.result())
     """, domain)
     out, err = finish(client)
-    got = labkit_ros2(domain, "param", "get", "/real_server", "speed")
-    done = labkit_ros2(domain, "param", "set", "/real_server", "speed", "4.0")
+    set_ = labkit_ros2(domain, "param", "set", "/real_server", "speed", "4.0")
     real_out, real_err = finish(server)
     assert "available True" in out, out + err
     assert ("response std_srvs.srv.SetBool_Response(success=True, "
             "message='real server got True')") in out
     assert got.stdout == "Double value is: 1.5\n", got
-    assert done.stdout == "Set parameter successful\n", done
+    assert set_.stdout == "Set parameter successful\n", set_
     assert "speed now 4.0" in real_out, real_out + real_err
 
 
@@ -370,14 +380,16 @@ while time.monotonic() < end:
 def test_labkit_to_labkit_services_actions_parameters(tmp_path, domain):
     """Two labkit processes: a service call, an action with feedback and parameters,
     all over DDS with rmw_cyclonedds_cpp's request header."""
+    # three terminals at once, started with the server (not after it is up): the
+    # service call and the goal wait for their server, `param get` waits (bounded)
+    # for the node to be discovered, where ros2cli would ask its daemon
+    got = labkit_ros2(domain, "param", "get", "/lk_server", "gain", background=True)
     server = labkit(tmp_path, "lk_server", LK_SERVER, domain)
-    assert server.stdout.readline().strip() == "ready"
-    # three terminals at once, then the parameter change
     call = labkit_ros2(domain, "service", "call", "/add_two_ints",
                        "example_interfaces/srv/AddTwoInts", "{a: 2, b: 40}", background=True)
     goal = labkit_ros2(domain, "action", "send_goal", "--feedback", "/fibonacci",
                        "example_interfaces/action/Fibonacci", "{order: 4}", background=True)
-    got = labkit_ros2(domain, "param", "get", "/lk_server", "gain", background=True)
+    assert server.stdout.readline().strip() == "ready"
     call, goal, got = done(call), done(goal), done(got)
     set_ = labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
     out, err = finish(server)

@@ -53,11 +53,18 @@ class GaveUp(CliError):
 
 # --------------------------------------------------------------------------- graph queries
 
-def node_names(node, include_hidden=False):
-    """Full names of the nodes in the graph (ros2node.api.get_node_names)."""
-    return [
-        full_node_name(n, ns) for n, ns in node.get_node_names_and_namespaces()
-        if include_hidden or (n and not n.startswith(HIDDEN_PREFIX))]
+def node_names(node, include_hidden=False, wait_for=None):
+    """Full names of the nodes in the graph (ros2node.api.get_node_names).
+
+    wait_for: the node a verb is about to use; on DDS a fresh process may not have
+    discovered it yet (ros2cli asks its daemon, which has): wait for it, bounded."""
+    def names():
+        return [full_node_name(n, ns) for n, ns in node.get_node_names_and_namespaces()
+                if include_hidden or (n and not n.startswith(HIDDEN_PREFIX))]
+    if wait_for is not None:
+        from labkit import dds
+        dds.wait_until(lambda: wait_for in names())
+    return names()
 
 
 def topic_names_and_types(node, include_hidden=False):

@@ -50,7 +50,7 @@ def _section(io, title, names_and_types, include_hidden):
 
 def info(args, io):
     with CliNode() as node:
-        names = node_names(node, include_hidden=args.include_hidden)
+        names = node_names(node, include_hidden=args.include_hidden, wait_for=args.node_name)
         count = names.count(args.node_name)
         if count > 1:
             io.eprint(INFO_NONUNIQUE.format(num_nodes=count, node_name=args.node_name))

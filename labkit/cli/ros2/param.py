@@ -138,7 +138,7 @@ def list_parameters(node, node_name, prefixes=(), timeout_sec=None):
 
 def _check_node(node, args):
     name = absolute_node_name(args.node_name)
-    if name not in node_names(node, args.include_hidden_nodes):
+    if name not in node_names(node, args.include_hidden_nodes, wait_for=name):
         raise CliError('Node not found')
     return name
 
@@ -159,9 +159,9 @@ def _list_args(p):
 def list_(args, io):
     regex = re.compile(args.filter[0]) if args.filter else None
     with CliNode() as node:
-        names = node_names(node, args.include_hidden_nodes)
+        wanted = absolute_node_name(args.node_name)
+        names = node_names(node, args.include_hidden_nodes, wait_for=wanted)
         if args.node_name:
-            wanted = absolute_node_name(args.node_name)
             if wanted not in names:
                 return 'Node not found'
             names = [wanted]
