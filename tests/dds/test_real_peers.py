@@ -584,3 +584,38 @@ def test_without_ros_distro_labkit_follows_a_jazzy_peers_gid_layout(tmp_path, do
     out, err = finish(peer)
     finish(lk)
     assert "lists labkit node True" in out, out + err
+
+
+@needs_rosref
+def test_service_call_ends_with_one_line_when_the_server_goes_away_mid_call(tmp_path, domain):
+    """The real server is stopped (Ctrl+C) while it handles the request: a real
+    `ros2 service call` would wait forever; labkit's prints one line and exits 1."""
+    server = real(tmp_path, "dying_server", """
+        import signal
+        from std_srvs.srv import Trigger
+        rclpy.init(args=[])
+        node = rclpy.create_node('dying_server')
+        def handle(req, resp):
+            print('handling', flush=True)
+            os.kill(os.getpid(), signal.SIGINT)     # Ctrl+C before it answers
+            time.sleep(5)
+            return resp
+        node.create_service(Trigger, 'trigger', handle)
+        print('ready', flush=True)
+        try:
+            spin_until(node, lambda: False, 20)
+        except KeyboardInterrupt:
+            print('stopped', flush=True)
+    """, domain)
+    assert server.stdout.readline().strip() == "ready"
+    call = labkit_ros2(domain, "service", "call", "/trigger", "std_srvs/srv/Trigger",
+                       background=True)
+    out, err = finish(server)
+    assert out == "handling\nstopped\n", out + err
+    call = done(call)
+    assert call.returncode == 1, call
+    assert call.stderr == ("Exception while calling service: the server of '/trigger' "
+                           "went away before it answered\n"), call.stderr
+    assert call.stdout.startswith("waiting for service to become available...\n"
+                                  "requester: making request: ") or \
+        call.stdout.startswith("requester: making request: "), call.stdout

@@ -102,6 +102,24 @@ def _service_class(service_type):
     return cls, parts[0], parts[-1]
 
 
+SERVER_GONE = "Exception while calling service: the server of '{}' went away before it answered"
+
+
+def _spin_while_served(node, client, future, name):
+    """Spin until the response arrives. On DDS a server may go away mid-call (stopped,
+    crashed): a real `ros2 service call` then waits forever; labkit stops with one
+    line once no server is left. In-process, the graph answers or says why itself."""
+    from labkit import dds
+    if not dds.is_connected():
+        node.spin_until(future)
+        return
+    while not future.done():
+        node.spin_until(future, timeout_sec=0.1)
+        if not future.done() and not client.service_is_ready():
+            client.remove_pending_request(future)
+            raise CliError(SERVER_GONE.format(name))
+
+
 def call(args, io):
     if args.rate is not None and args.rate <= 0:
         raise CliError('rate must be greater than zero')
@@ -126,7 +144,7 @@ def call(args, io):
             io.print('requester: making request: %r\n' % request)
             last_call = clock.now().nanoseconds
             future = client.call_async(request)
-            node.spin_until(future)
+            _spin_while_served(node, client, future, args.service_name)
             if future.result() is None:
                 raise CliError('Exception while calling service: %r' % future.exception())
             io.print('response:\n%r\n' % future.result())
