@@ -24,8 +24,20 @@ API cannot set): labkit prints one line with the remedy,
 RMW_IMPLEMENTATION=rmw_cyclonedds_cpp on the real side. 640x480 images from labkit to
 a Fast DDS process lose frames on a loaded machine (UDP bursts; see
 benchmarks/README.md). Cyclone binds its two unicast receive sockets to the wildcard
-address (it sends to and advertises 127.0.0.1 only). No SROS2 security, no
-type_description service, no content-filtered topics.
+address (it sends to and advertises 127.0.0.1 only): in the 11.0.1 library the bind
+address follows the socket's purpose (receive sockets bind to any), and its
+configuration has no element for it (NetworkInterface chooses what is advertised and
+sent on, not what is bound). No SROS2 security, no type_description service, no
+content-filtered topics.
+
+Bad input on DDS: CYCLONEDDS_URI (files or XML, as rmw_cyclonedds_cpp reads it) is
+applied after labkit's own configuration; a message larger than its MaxSampleSize is
+not sent (one line, once per topic; Cyclone also traces each dropped sample), local
+subscribers still get it. No valid ROS name is mangled: rcl's 247-character limit is
+exactly what keeps 'rq/<name>Request' within the 256 characters of a DDS topic name.
+A server that goes away mid-call ends `ros2 service call` with one line (the real
+verb waits forever); a server killed without leaving is noticed when its DDS lease
+runs out (Fast DDS: 20 s, Cyclone: 10 s).
 """
 import os
 import threading

@@ -30,6 +30,14 @@ FASTDDS_CLIENT_LINE = (
     "the reply never reaches it. Start the caller with RMW_IMPLEMENTATION=rmw_cyclonedds_cpp.")
 
 
+OVERSIZE_LINE = ("[WARN] [labkit.dds]: failed to publish data on '{name}' over DDS: a sample of "
+                 "{size} bytes is larger than Cyclone DDS accepts (MaxSampleSize); "
+                 "subscribers in this process still get it")
+
+
+DDS_RETCODE_ERROR = -1
+
+
 class RemoteNode(NodeInfo):
     """A node of another process, seen through DDS."""
     __slots__ = ("remote", "participant")
@@ -72,7 +80,7 @@ class Bridge:
         self.last_discovery = time.monotonic()   # when discovery last brought news
         self._news = threading.Condition()        # notified when it does
         self._lock = threading.RLock()
-        self._domain = Domain(domain_id, config.cyclone_xml(localhost))
+        self._domain = Domain(domain_id, config.with_user_config(config.cyclone_xml(localhost)))
         # rmw puts the security enclave in the participant's user data
         self.participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
         self.guid = self.participant.guid.bytes
@@ -86,6 +94,7 @@ class Bridge:
         self._graph_nodes = {}        # (participant, ns, name) -> RemoteNode
         self._graph_eps = {}          # DDS GUID -> (signature, Endpoint)
         self._fastdds_warned = set()
+        self._warned = set()          # (kind, name) of the one-line warnings already given
         self.client_ids = itertools.count(random.getrandbits(40) << 20)
         self._waitset = WaitSet(self.participant)
         self._guard = GuardCondition(self.participant)
@@ -444,6 +453,11 @@ class Bridge:
                 mirror.send_request(request, header, fastdds)
         return sink
 
+    def warn_once(self, key, line):
+        if key not in self._warned:
+            self._warned.add(key)
+            print(line, file=sys.stderr, flush=True)
+
     def warn_fastdds_client(self, name):
         if name not in self._fastdds_warned:
             self._fastdds_warned.add(name)
@@ -521,7 +535,11 @@ class _Mirror:
         from cyclonedds._clayer import ddspy_write
         writer = self.writer
         if writer is not None:
-            ddspy_write(writer._ref, wire.pad4(rmw_serialize(msg)))
+            data = wire.pad4(rmw_serialize(msg))
+            # DDS_RETCODE_ERROR: Cyclone refused the sample (a timeout is another code)
+            if ddspy_write(writer._ref, data) == DDS_RETCODE_ERROR:
+                self.bridge.warn_once(("size", self.ep.name),
+                                      OVERSIZE_LINE.format(name=self.ep.name, size=len(data)))
 
     def _on_message(self):
         from labkit.interfaces import deserialize

@@ -77,5 +77,12 @@ def cyclone_xml(localhost=True):
             "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
 
 
+def with_user_config(xml):
+    """labkit's configuration, then the user's CYCLONEDDS_URI (files or XML, as
+    rmw_cyclonedds_cpp reads it): what the user sets there wins."""
+    user = os.environ.get("CYCLONEDDS_URI", "").strip()
+    return xml + "," + user if user else xml
+
+
 def distro():
     return os.environ.get("ROS_DISTRO", "humble")

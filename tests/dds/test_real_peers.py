@@ -41,12 +41,12 @@ def real(tmp_path, name, code, domain):
                             stderr=subprocess.PIPE, text=True)
 
 
-def labkit(tmp_path, name, code, domain, *args, distro="jazzy"):
+def labkit(tmp_path, name, code, domain, *args, distro="jazzy", env_extra=None):
     """Start a program under `labkit exec` (live time, joins DDS like a ROS 2 process)."""
     path = tmp_path / f"{name}.py"
     path.write_text(PRELUDE + textwrap.dedent(code))
     env = _env(domain, LABKIT_TIME="live", LABKIT_DDS="on", ROS_DISTRO=distro,
-               PYTHONPATH=str(REPO))
+               PYTHONPATH=str(REPO), **(env_extra or {}))
     if distro is None:
         del env["ROS_DISTRO"]
     return subprocess.Popen([sys.executable, "-m", "labkit", "exec", str(path), *args], env=env,
@@ -619,3 +619,46 @@ def test_service_call_ends_with_one_line_when_the_server_goes_away_mid_call(tmp_
     assert call.stdout.startswith("waiting for service to become available...\n"
                                   "requester: making request: ") or \
         call.stdout.startswith("requester: making request: "), call.stdout
+
+
+def test_message_larger_than_cyclone_accepts_gets_one_line(tmp_path, domain):
+    """A message larger than Cyclone's MaxSampleSize (set through CYCLONEDDS_URI, which
+    labkit reads as rmw_cyclonedds_cpp does) is not sent to the other process: one
+    line, once; the smaller ones still go, and the in-process subscriber gets all."""
+    receiver = labkit(tmp_path, "receiver", """
+        from std_msgs.msg import String
+        rclpy.init()
+        node = rclpy.create_node('receiver')
+        got = []
+        node.create_subscription(String, 'big', lambda m: got.append(len(m.data)), 10)
+        print('ready', flush=True)
+        spin_until(node, lambda: 20 in got, 20)
+        print('remote subscriber got', got)
+    """, domain)
+    assert receiver.stdout.readline() == "ready\n"
+    sender = labkit(tmp_path, "sender", """
+        from std_msgs.msg import String
+        rclpy.init()
+        node = rclpy.create_node('sender')
+        got = []
+        node.create_subscription(String, 'big', lambda m: got.append(len(m.data)), 10)
+        pub = node.create_publisher(String, 'big', 10)
+        print('matched', spin_until(node, lambda: pub.get_subscription_count() == 2, 15))
+        for size in (10, 100000, 100000, 20):
+            pub.publish(String(data='x' * size))
+        spin_until(node, lambda: len(got) == 4, 5)
+        print('local subscriber got', got)
+        spin_until(node, lambda: False, 1.0)   # the reliable writer delivers the last one
+    """, domain, env_extra={"CYCLONEDDS_URI": "<CycloneDDS><Domain><Internal><MaxSampleSize>"
+                                              "65536B</MaxSampleSize></Internal></Domain>"
+                                              "</CycloneDDS>"})
+    out, err = finish(sender)
+    r_out, r_err = finish(receiver)
+    assert out == "matched True\nlocal subscriber got [10, 100000, 100000, 20]\n", out + err
+    assert r_out == "remote subscriber got [10, 20]\n", r_out + r_err
+    lines = [line for line in err.splitlines() if "[labkit.dds]" in line]
+    assert lines == [
+        "[WARN] [labkit.dds]: failed to publish data on '/big' over DDS: a sample of 100012 "
+        "bytes is larger than Cyclone DDS accepts (MaxSampleSize); subscribers in this "
+        "process still get it"], err
+    assert "Traceback" not in err
