@@ -2,9 +2,12 @@
 
 `run_command("build --symlink-install")` returns the same CompletedCommand
 as labkit.ros2. Packages are found below --base-paths (default: `.`),
-ordered by their package.xml dependencies, built one after the other into
-install/<pkg> (isolated layout), with build/, install/ and log/ laid out
-like the real tool's.
+ordered by their package.xml dependencies and built into install/<pkg>
+(isolated layout), with build/, install/ and log/ laid out like the real
+tool's. The printed order is the executor's (`execute()`): independent
+packages start together, up to --parallel-workers (2 in virtual time), and
+each one's `Finished <<<` comes when its time has passed; the jobs
+themselves run one after the other in this process.
 
 Times: in live mode colcon prints measured wall-clock times. In virtual time
 mode it prints a deterministic *cost model* instead (build.py's `cost`: a
