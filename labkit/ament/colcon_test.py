@@ -227,10 +227,13 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
 
 # The `plugins:` line of pytest's header on a Humble desktop machine: the pytest11 entry
 # points of ros-humble-launch-testing-ros, ament_lint's linters, launch-testing and
-# python3-colcon-core. Names, versions and their order are copied from a real Humble log
-# of the same pytest 6.2.5 / py 1.10.0 (a `colcon test` of an ament_python package, late
-# 2023); other Humble machines list the same plugins in another order or with later patch
-# versions (a sync bumps them), and with ament-mypy when that package is installed.
+# python3-colcon-core. Names, versions and their order are copied from one real Humble
+# log with the same pytest 6.2.5 / py 1.10.0 (pytest run by colcon test through ctest's
+# ament_cmake_pytest; the plugins are the same for an ament_python package, as a
+# ros2/launch_ros#390 log of `colcon test` shows with older versions). Not verified: that
+# this exact set of versions is what a current ros-humble-desktop install has; other
+# machines list the same plugins in another order or with later patch versions (each
+# sync bumps them), and add ament-mypy when it is installed.
 HUMBLE_PLUGINS = ('plugins: launch-testing-ros-0.19.7, ament-xmllint-0.12.10, '
                   'ament-copyright-0.12.10, ament-lint-0.12.10, ament-pep257-0.12.10, '
                   'launch-testing-1.0.4, ament-flake8-0.12.10, colcon-core-0.15.2')
