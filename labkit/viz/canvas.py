@@ -114,6 +114,14 @@ class TurtleCanvas:
         """A canvas on the newest turtlesim running in this kernel (or on `sim`)."""
         return cls(sim, fps=fps)
 
+    @classmethod
+    def remote(cls, fps=30):
+        """A canvas on the turtlesim of another process (after labkit.connect()): its
+        turtles follow their /<name>/pose topics (labkit.viz.remote_turtles)."""
+        from labkit.viz.remote_turtles import RemoteTurtles
+        canvas = cls(RemoteTurtles().world, fps=fps)
+        return canvas
+
     # -- static faces -----------------------------------------------------------------
     def image(self):
         """The current picture as a PIL image."""
