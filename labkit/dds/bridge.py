@@ -579,7 +579,7 @@ class _Mirror:
                 data = reader.get_matched_publication_data(handle)
                 known = data.participant_key.bytes[:2] == FASTDDS_VENDOR
             except Exception:
-                known = False
+                return False          # not known yet: ask again with its next request
             self._senders[handle] = known
         return known
 

@@ -64,6 +64,18 @@ def labkit_ros2(domain, *argv, timeout=20, background=False):
     return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=timeout)
 
 
+def notebook(domain, code, peer, timeout=60):
+    """Run `code` like a notebook in live time (it connects itself); then stop `peer`."""
+    env = _env(domain, LABKIT_TIME="live", PYTHONPATH=str(REPO))
+    env.pop("LABKIT_DDS", None)
+    try:
+        return subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
+                              text=True, timeout=timeout)
+    finally:
+        peer.terminate()
+        finish(peer)
+
+
 def done(proc, timeout=25):
     out, err = finish(proc, timeout)
     return subprocess.CompletedProcess(proc.args, proc.returncode, out, err)
@@ -551,14 +563,7 @@ def test_notebook_connect_verb_and_disconnect(tmp_path, domain):
         from labkit import dds
         print('connected after reset', dds.is_connected())
     """)
-    env = _env(domain, LABKIT_TIME="live", PYTHONPATH=str(REPO))
-    env.pop("LABKIT_DDS", None)
-    try:
-        nb = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
-                            text=True, timeout=40)
-    finally:
-        talker.terminate()
-        finish(talker)
+    nb = notebook(domain, code, talker)
     assert nb.stdout == (f"joined DDS domain {domain} (this computer only)\n/talker\n"
                          "checker passed True\n"
                          f"left DDS domain {domain}\n'' None\nconnected after reset False\n"), nb

@@ -1,10 +1,8 @@
 """A notebook that called labkit.connect() draws the turtlesim of another terminal:
 the canvas's model follows /turtle1/pose over DDS (the model is tested, not pixels)."""
-import subprocess
-import sys
 import textwrap
 
-from tests.dds.test_real_peers import REPO, _env, finish, labkit_ros2, domain  # noqa: F401
+from tests.dds.test_real_peers import domain, labkit_ros2, notebook  # noqa: F401
 
 
 def test_canvas_model_follows_a_turtlesim_in_another_process(domain):
@@ -49,13 +47,7 @@ def test_canvas_model_follows_a_turtlesim_in_another_process(domain):
         labkit.reset()
         print('following after reset', turtles._thread.is_alive())
     """)
-    env = _env(domain, LABKIT_TIME="live", PYTHONPATH=str(REPO))
-    try:
-        nb = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True,
-                            text=True, timeout=60)
-    finally:
-        sim.terminate()
-        finish(sim)
+    nb = notebook(domain, code, sim)
     assert nb.stdout == ("turtle1 drawn True\nat the centre 5.544 5.544 0\nmatched True\n"
                          "moved right True same height True\npen lines drawn True poses True\n"
                          "canvas draws ['turtle1'] (500, 500)\nfollowing after reset False\n"
