@@ -164,6 +164,11 @@ class TurtleCanvas:
         self.start()
         register_window(self)           # turtlesim's window: shown again if its cell re-runs
         show(widget, png=self.snapshot(), text="<turtlesim canvas>")
+        # a page reloaded meanwhile has empty canvas models (ipycanvas keeps no pixels):
+        # every showing gets a whole frame, not only what changed since the last one
+        with self._draw_lock:
+            self._drawn = None
+        self._wake.set()
 
     # -- live face ----------------------------------------------------------------------
     @property
