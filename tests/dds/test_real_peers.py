@@ -124,22 +124,26 @@ def test_pubsub_both_ways_string_twist_image_and_real_graph_queries(tmp_path, do
         img.data = bytes(range(256)) * 3600
         pubs[1] = (pubs[1][0], tw); pubs[2] = (pubs[2][0], img)
         names = lambda: [n for n, _ in node.get_node_names_and_namespaces()]
-        end, done_at = time.monotonic() + 20, None
+        # looked at while labkit's node lives (when it ends, its writers go first)
+        lk_pubs = lambda: sorted(n for n, _ in node.get_publisher_names_and_types_by_node(
+            'lk_side', '/') if n.startswith('/lk_'))
+        end, done_at, seen_pubs, seen_nodes = time.monotonic() + 20, None, None, None
         while time.monotonic() < end and (done_at is None or time.monotonic() < done_at + 3):
             for pub, msg in pubs:
                 pub.publish(msg)
             spin_until(node, lambda: False, 0.2)
-            if done_at is None and len(got) == 3 and 'lk_side' in names():
-                done_at = time.monotonic()   # keep publishing a little for the other side
+            if done_at is None and 'lk_side' in names():
+                seen_pubs, seen_nodes = lk_pubs(), sorted(names())
+                if len(got) == 3 and len(seen_pubs) == 3:
+                    done_at = time.monotonic()   # keep publishing a little for the other side
         print('got', sorted(got))
         if 'lk_string' in got:
             print('string', got['lk_string'].data)
             print('twist', got['lk_twist'].linear.y, got['lk_twist'].angular.x)
             im = got['lk_image']
             print('image', im.width, im.height, im.encoding, len(im.data), bytes(im.data[:3]).hex())
-        print('nodes', sorted(names()))
-        pubs_of = node.get_publisher_names_and_types_by_node('lk_side', '/')
-        print('lk_side publishes', [n for n, _ in pubs_of if n.startswith('/lk_')])
+        print('nodes', seen_nodes)
+        print('lk_side publishes', seen_pubs)
         spin_until(node, lambda: 'lk_side' not in names(), 10)   # stay until labkit is done
     """, domain)
     lk_prog = labkit(tmp_path, "lk_side", """
