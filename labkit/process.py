@@ -383,6 +383,10 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     reap()
     with _lock:
         _processes.append(proc)
+    if live_view is not None and echo and sink is None and proc.parent is MAIN:
+        # live JupyterLab: what it prints goes to its own output area in this cell, never
+        # into whatever cell runs next
+        proc.view = live_view(proc)
     proc.thread = world.start_thread(body, name=f"labkit-{name}-{proc.pid}")
     proc.thread._labkit_process = proc
     _wait_first_wait_point(proc)
@@ -513,6 +517,10 @@ def flush_echo_all():
 
 # called by labkit.reset() after every process stopped (jobs forget their handles, ...)
 reset_hooks = []
+
+# live JupyterLab: callable(process) -> its output area (.write(stream_name, text)) or None,
+# for a process the notebook starts itself; set by `%load_ext labkit` (labkit.cli.magics)
+live_view = None
 
 
 def reset_all():

@@ -187,7 +187,38 @@ def load_ipython_extension(ipython):
     if _loaded_into is not ipython:
         # a line a background process started shows when the cell ends, not later
         ipython.events.register('post_run_cell', _flush_process_lines)
+    from labkit import process
+    process.live_view = _process_view
     _loaded_into = ipython
+
+
+class _ProcessJob:
+    """A process the notebook started (labkit.process.start), as its output area sees it."""
+
+    def __init__(self, process):
+        self.process = process
+
+    def running(self):
+        return self.process.returncode is None      # from before its thread starts
+
+    def stop(self):
+        self.process.stop()
+
+    def line(self):
+        state = 'running' if self.running() else 'stopped'
+        return f'{self.process.pid} {state} {self.process.name}'
+
+
+def _process_view(process):
+    """Live JupyterLab: an output area with a Stop button for a process the notebook
+    started itself, as a `ros2 run` job has (labkit/viz/job_output.py)."""
+    from labkit.viz import job_output
+    if not job_output.enabled():
+        return None
+    view = job_output.JobView(process.name)
+    view.attach(_ProcessJob(process))
+    view.show()
+    return view
 
 
 def _flush_process_lines(*_):
@@ -202,4 +233,7 @@ def unload_ipython_extension(ipython):
         ipython.events.unregister('post_run_cell', _flush_process_lines)
     except ValueError:
         pass
+    process = sys.modules.get('labkit.process')
+    if process is not None:
+        process.live_view = None
     _loaded_into = None

@@ -2,10 +2,11 @@
 (labkit.tools.lab, LABKIT_TIME=live) on 127.0.0.1, a short notebook run cell by
 cell in headless Chromium, and what the learner then sees in each cell.
 
-A background job's lines belong to the job's own output area, in the cell that
-started it: the next cells show only what they print themselves, also while
-the job goes on printing; `job.stop()` stops it. Everything is stopped at the
-end (kernel, server, browser)."""
+A background job's lines (`%ros2 topic pub --rate`), and those of a node the
+notebook starts itself (`process.start`), belong to their own output areas in
+the cells that started them: the next cells show only what they print
+themselves, also while the others go on printing; `.stop()` stops them.
+Everything is stopped at the end (kernel, server, browser)."""
 
 from __future__ import annotations
 
@@ -22,14 +23,40 @@ import pytest
 
 from book_support import ROOT, missing
 
-# Every cell the learner runs. The job prints 20 lines a second; the cells after
-# it must not get any of them.
+# Every cell the learner runs. The job prints 20 lines a second, the node the
+# notebook starts itself logs 20 lines a second; the cells after them must not
+# get any of those lines.
+NODE = """import rclpy
+from rclpy.node import Node
+from labkit import process
+
+
+class Chatty(Node):
+    def __init__(self):
+        super().__init__("chatty")
+        self.create_timer(0.05, lambda: self.get_logger().info("tick"))
+
+
+def main():
+    rclpy.init()
+    node = Chatty()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
+    node.destroy_node()
+    rclpy.try_shutdown()
+
+
+chatty = process.start(main=main, name="chatty")"""
 CELLS = [
     "%load_ext labkit\nimport labkit",
     'pub = %ros2 topic pub --rate 20 /chatter std_msgs/msg/String "{data: hello}"',
+    NODE,
     'labkit.sleep(1.0)\nprint("the next cell")',
-    "pub.stop()\nprint(pub.state)",
+    "pub.stop()\nchatty.stop()\nprint(pub.state, chatty.running)",
 ]
+WIDGET = "application/vnd.jupyter.widget-view+json"
 
 NB = ("(() => { const a = window.jupyterapp; if (!a) return null;"
       " for (const w of a.shell.widgets('main'))"
@@ -159,26 +186,27 @@ def test_background_job_output_stays_in_its_own_cell(chrome, lab):
         && w.sessionContext.session.kernel
         && w.sessionContext.session.kernel.status === 'idle'; }})()""", 60)
 
-    _run_cell(chrome, 0)
-    _run_cell(chrome, 1)
-    job = _outputs(chrome, 1)
-    assert any("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in job), \
-        f"the job got no output area of its own: {job}"
-    _run_cell(chrome, 2)
-    assert _text(_outputs(chrome, 2)) == "the next cell\n", _outputs(chrome, 2)
-    # while no cell runs, the job goes on printing: into its own area only
-    time.sleep(1.0)
-    assert _text(_outputs(chrome, 2)) == "the next cell\n", _outputs(chrome, 2)
-    assert _outputs(chrome, 1) == job
-    shown = chrome.wait_for(
-        f"(() => {{ const t = {NB}.content.widgets[1].node.innerText;"
-        " return (t.match(/publishing #/g) || []).length >= 10 ? t : ''; })()", 10)
-    assert "data='hello'" in shown
-
+    for i in range(3):
+        _run_cell(chrome, i)
+    areas = {i: _outputs(chrome, i) for i in (1, 2)}
+    for i, outputs in areas.items():
+        assert any(WIDGET in o.get("data", {}) for o in outputs), \
+            f"cell {i}: no output area of its own: {outputs}"
     _run_cell(chrome, 3)
-    assert _text(_outputs(chrome, 3)) == "stopped\n", _outputs(chrome, 3)
+    assert _text(_outputs(chrome, 3)) == "the next cell\n", _outputs(chrome, 3)
+    # while no cell runs, the job and the node go on printing: into their own areas only
+    time.sleep(1.0)
+    assert _text(_outputs(chrome, 3)) == "the next cell\n", _outputs(chrome, 3)
+    for i, pattern in ((1, "publishing #"), (2, r"\[chatty\]: tick")):
+        assert _outputs(chrome, i) == areas[i]
+        chrome.wait_for(f"(() => {{ const t = {NB}.content.widgets[{i}].node.innerText;"
+                        f" return (t.match(/{pattern}/g) || []).length >= 10; }})()", 10)
+
+    _run_cell(chrome, 4)
+    assert _text(_outputs(chrome, 4)) == "stopped False\n", _outputs(chrome, 4)
     chrome.wait_for(f"{NB}.content.widgets[1].node.innerText.includes('stopped ros2 topic pub')",
                     10)
+    chrome.wait_for(f"{NB}.content.widgets[2].node.innerText.includes('stopped chatty')", 10)
     errors = [o for i in range(len(CELLS)) for o in _outputs(chrome, i)
               if o["output_type"] == "error"]
     assert not errors, errors
