@@ -36,6 +36,7 @@ OVERSIZE_LINE = ("[WARN] [labkit.dds]: failed to publish data on '{name}' over D
 
 
 DDS_RETCODE_ERROR = -1
+REPLY_MATCH_WAIT_S = 3.0        # how long a reply waits for the client's reply reader
 
 
 class RemoteNode(NodeInfo):
@@ -557,7 +558,8 @@ class _Mirror:
         from labkit.interfaces import deserialize
         reader = self.reader
         for data, info in self.bridge.take(reader):
-            if self._from_fastdds(reader, info.publication_handle):
+            caller = self._caller(reader, info.publication_handle)
+            if caller is not None and caller[:2] == FASTDDS_VENDOR:
                 self.bridge.warn_fastdds_client(self.ep.name)
                 continue
             try:
@@ -568,25 +570,44 @@ class _Mirror:
             # rclpy's own request header (imported late: rclpy sits above this room)
             from labkit.rclpy.service import RequestHeader, RequestId
             header = RequestHeader(RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
-                                   self._make_reply(client_id, seq), info.source_timestamp)
+                                   self._make_reply(client_id, seq, caller),
+                                   info.source_timestamp)
             if self.ep.sink is not None:
                 self.ep.sink((request, header))
 
-    def _from_fastdds(self, reader, handle):
+    def _caller(self, reader, handle):
+        """The participant GUID of the client that wrote a request (None: not known yet)."""
         known = self._senders.get(handle)
         if known is None:
             try:
-                data = reader.get_matched_publication_data(handle)
-                known = data.participant_key.bytes[:2] == FASTDDS_VENDOR
+                known = reader.get_matched_publication_data(handle).participant_key.bytes
             except Exception:
-                return False          # not known yet: ask again with its next request
+                return None           # ask again with its next request
             self._senders[handle] = known
         return known
 
-    def _make_reply(self, client_id, seq):
+    def _reply_reader_matched(self, participant):
+        writer = self.writer
+        try:
+            for handle in writer.get_matched_subscriptions():
+                if writer.get_matched_subscription_data(handle).participant_key.bytes == participant:
+                    return True
+        except Exception:
+            return True               # cannot tell: send
+        return False
+
+    def _make_reply(self, client_id, seq, caller):
         def reply(header, response):
             from labkit.interfaces import rmw_serialize
             from cyclonedds._clayer import ddspy_write
+            # the client may have found our request reader before our reply writer has
+            # found its reply reader: a volatile reply written now would be lost and the
+            # caller would wait forever: wait for it, bounded (rmw_cyclonedds_cpp guards
+            # against the same race before it sends a response).
+            end = time.monotonic() + REPLY_MATCH_WAIT_S
+            while (caller is not None and self.writer is not None
+                   and not self._reply_reader_matched(caller) and time.monotonic() < end):
+                time.sleep(0.01)
             writer = self.writer
             if writer is not None:
                 ddspy_write(writer._ref, wire.frame_request(client_id, seq,

@@ -64,6 +64,23 @@ def labkit_ros2(domain, *argv, timeout=20, background=False):
     return subprocess.run(cmd, env=env, capture_output=True, text=True, timeout=timeout)
 
 
+def line_from(stream, wanted, timeout):
+    """The lines of `stream` up to the first one `wanted` accepts, or up to `timeout` s."""
+    import select
+    end, lines = time.monotonic() + timeout, []
+    while time.monotonic() < end:
+        ready, _, _ = select.select([stream], [], [], max(0.0, end - time.monotonic()))
+        if not ready:
+            break
+        line = stream.readline()
+        if not line:
+            break
+        lines.append(line)
+        if wanted(line):
+            break
+    return "".join(lines)
+
+
 def notebook(domain, code, peer, timeout=60):
     """Run `code` like a notebook in live time (it connects itself); then stop `peer`."""
     env = _env(domain, LABKIT_TIME="live", PYTHONPATH=str(REPO))
@@ -432,14 +449,18 @@ def test_fast_dds_client_calling_labkit_service_gets_one_clear_line(tmp_path, do
         cli = node.create_client(ListParameters, '/lk_server/list_parameters')
         print('available', cli.wait_for_service(timeout_sec=10.0), flush=True)
         future = cli.call_async(ListParameters.Request())
-        rclpy.spin_until_future_complete(node, future, timeout_sec=2.0)
+        # stay until labkit has seen the request: sent before labkit matched this
+        # writer, it comes again at Fast DDS's next heartbeat (every 3 s)
+        spin_until(node, lambda: future.done() or os.path.exists(DONE), 15)
         print('answered', future.done())
-    """, domain)
+    """.replace("DONE", repr(str(tmp_path / "done"))), domain)
+    warned = line_from(server.stderr, lambda line: "Fast DDS client" in line, 15)
+    (tmp_path / "done").touch()
     out, _ = finish(client)
     labkit_ros2(domain, "param", "set", "/lk_server", "gain", "7")
     _, err = finish(server)
-    assert "available True" in out
-    lines = [line for line in err.splitlines() if "Fast DDS client" in line]
+    assert "available True" in out and "answered False" in out, out
+    lines = [line for line in (warned + err).splitlines() if "Fast DDS client" in line]
     assert lines == ["[WARN] [labkit.dds]: a Fast DDS client called the labkit service "
                      "'/lk_server/list_parameters': Fast DDS matches replies by the RTPS "
                      "related-sample-identity, which Cyclone DDS cannot set, so the reply "
