@@ -225,7 +225,8 @@ threading.Thread.start = _thread_start
 
 
 # In virtual time a process that calls time.sleep() must not hold the world still for
-# real seconds: it sleeps in virtual time (a wait point), and a stop interrupts it.
+# real seconds: it sleeps in virtual time (a wait point), and a stop interrupts it (in
+# live time too: a `while True: ...; time.sleep(1)` program ends at Ctrl-C / its Stop).
 _real_sleep = time.sleep
 
 
@@ -241,7 +242,8 @@ def _called_by_host() -> bool:
 
 
 def _process_sleep(seconds):
-    if world.mode() != "virtual" or _called_by_host():
+    # live time: real sleeps, but a process's sleep still ends at a stop (Ctrl-C), below
+    if _called_by_host() or (world.mode() != "virtual" and current() is MAIN):
         return _real_sleep(seconds)
     proc = current()
     if proc is MAIN:
