@@ -454,6 +454,15 @@ class Bridge:
                 mirror.send_request(request, header, fastdds)
         return sink
 
+    def writer_participant(self, handle):
+        """The participant GUID of a remote writer, by its instance handle (discovery)."""
+        with self._lock:
+            self._sync_remote()
+            for kind, sample in self._remote_eps.values():
+                if kind == "writer" and sample.sample_info.instance_handle == handle:
+                    return sample.participant_key.bytes
+        return None
+
     def warn_once(self, key, line):
         if key not in self._warned:
             self._warned.add(key)
@@ -581,8 +590,10 @@ class _Mirror:
         if known is None:
             try:
                 known = reader.get_matched_publication_data(handle).participant_key.bytes
-            except Exception:
-                return None           # ask again with its next request
+            except Exception:         # no match data (yet): DDS discovery knows the writer
+                known = self.bridge.writer_participant(handle)
+                if known is None:
+                    return None       # ask again with its next request
             self._senders[handle] = known
         return known
 
