@@ -2,7 +2,9 @@
 
 A cell tagged ``solution`` is collapsed in JupyterLab (``source_hidden``) and
 in the HTML book (tag ``hide-input``), and its toggle says 显示参考答案 /
-隐藏参考答案 instead of the generic 显示代码. Run after editing notebooks:
+隐藏参考答案 instead of the generic 显示代码. JupyterLab still shows a collapsed
+cell's first line, so that line is a comment saying what the cell is (unless
+the cell is a ``%%`` cell magic, which must stay first). Run after editing notebooks:
 
     python tools/exercise_cells.py book            # rewrite in place
     python tools/exercise_cells.py --check book    # exit 1 if anything is off
@@ -15,6 +17,7 @@ import sys
 from pathlib import Path
 
 SHOW, HIDE = "显示参考答案", "隐藏参考答案"
+FIRST_LINE = "# 参考答案（折叠着：先自己做，做不出来再展开）"
 
 
 def notebooks(paths):
@@ -37,7 +40,13 @@ def normalize_cell(cell: dict) -> bool:
     if "hide-input" not in meta["tags"]:
         meta["tags"].append("hide-input")
     meta.setdefault("mystnb", {}).update(code_prompt_show=SHOW, code_prompt_hide=HIDE)
-    return json.dumps(meta, sort_keys=True) != before
+    changed = json.dumps(meta, sort_keys=True) != before
+    source = cell["source"] if isinstance(cell["source"], str) else "".join(cell["source"])
+    if not (source.startswith("# 参考答案") or source.startswith("%%")):
+        lines = (FIRST_LINE + "\n" + source).splitlines(keepends=True)
+        cell["source"] = lines if isinstance(cell["source"], list) else "".join(lines)
+        changed = True
+    return changed
 
 
 def normalize(path: Path, write: bool = True) -> bool:

@@ -16,11 +16,7 @@ import pytest
 from book_support import BOOK
 
 PREFIX = "# 参考答案"
-# Chapters whose authors have not given their solution cells that first line yet
-# (strict: the test fails once they have, so the name leaves this list).
-NOT_YET = {"ch06_interfaces", "ch07_parameters", "ch08_workspaces_packages",
-           "ch11_workspace", "ch12_interfaces", "ch13_nodes"} | {
-    p.stem for p in (BOOK / "part3_tools").glob("ch*.ipynb")}
+# tools/exercise_cells.py writes that first line into every solution cell.
 
 CHAPTERS = sorted(p for part in ("part1_basics", "part2_facer", "part3_tools")
                   for p in (BOOK / part).glob("ch*.ipynb"))
@@ -38,13 +34,7 @@ def revealing_first_lines(nb) -> list[str]:
     return found
 
 
-def _param(path):
-    marks = [pytest.mark.xfail(strict=True, reason="solution cells not yet marked")] \
-        if path.stem in NOT_YET else []
-    return pytest.param(path, marks=marks, id=path.stem)
-
-
-@pytest.mark.parametrize("path", [_param(p) for p in CHAPTERS])
+@pytest.mark.parametrize("path", CHAPTERS, ids=lambda p: p.stem)
 def test_collapsed_solution_shows_no_answer(path):
     nb = json.loads(path.read_text(encoding="utf-8"))
     assert not revealing_first_lines(nb), \
