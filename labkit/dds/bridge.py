@@ -37,6 +37,7 @@ OVERSIZE_LINE = ("[WARN] [labkit.dds]: failed to publish data on '{name}' over D
 
 DDS_RETCODE_ERROR = -1
 REPLY_MATCH_WAIT_S = 3.0        # how long a reply waits for the client's reply reader
+SENDER_WAIT_S = 5.0             # how long a request waits for discovery to name its sender
 
 
 class RemoteNode(NodeInfo):
@@ -482,6 +483,8 @@ class _Mirror:
         self.ep = ep
         self.reader = self.writer = None
         self.waiting = False
+        self.unsure = []          # requests whose sender discovery has not named yet
+        self.outbox = []
         kind = ep.kind
         if kind in (PUB, SUB):
             self.cls = _message_class(ep.type_name)
@@ -564,25 +567,33 @@ class _Mirror:
 
     # -- a local service answering remote clients
     def _on_request(self):
+        for data, info in self.bridge.take(self.reader):
+            self._request(data, info.publication_handle, info.source_timestamp,
+                          time.monotonic() + SENDER_WAIT_S)
+
+    def _request(self, data, handle, stamp, deadline):
         from labkit.interfaces import deserialize
-        reader = self.reader
-        for data, info in self.bridge.take(reader):
-            caller = self._caller(reader, info.publication_handle)
-            if caller is not None and caller[:2] == FASTDDS_VENDOR:
-                self.bridge.warn_fastdds_client(self.ep.name)
-                continue
-            try:
-                client_id, seq, body = wire.unframe_request(data)
-                request = deserialize(body, self.request_cls)
-            except Exception:
-                continue
-            # rclpy's own request header (imported late: rclpy sits above this room)
-            from labkit.rclpy.service import RequestHeader, RequestId
-            header = RequestHeader(RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
-                                   self._make_reply(client_id, seq, caller),
-                                   info.source_timestamp)
-            if self.ep.sink is not None:
-                self.ep.sink((request, header))
+        caller = self._caller(self.reader, handle)
+        if caller is None and time.monotonic() < deadline:
+            # a request can arrive before discovery tells whose writer sent it; a
+            # reliable writer never sends it again, so keep it and look again (flush)
+            self.unsure.append((data, handle, stamp, deadline))
+            self.waiting = True
+            return
+        if caller is not None and caller[:2] == FASTDDS_VENDOR:
+            self.bridge.warn_fastdds_client(self.ep.name)
+            return
+        try:
+            client_id, seq, body = wire.unframe_request(data)
+            request = deserialize(body, self.request_cls)
+        except Exception:
+            return
+        # rclpy's own request header (imported late: rclpy sits above this room)
+        from labkit.rclpy.service import RequestHeader, RequestId
+        header = RequestHeader(RequestId(client_id.to_bytes(8, "little") + bytes(8), seq),
+                               self._make_reply(client_id, seq, caller), stamp)
+        if self.ep.sink is not None:
+            self.ep.sink((request, header))
 
     def _caller(self, reader, handle):
         """The participant GUID of the client that wrote a request (None: not known yet)."""
@@ -644,12 +655,20 @@ class _Mirror:
                 self.bridge.wake()
 
     def flush(self):
-        """Send queued requests once the server's reader and writer are matched."""
+        """Look again at requests from senders not yet known; send queued requests once
+        the server's reader and writer are matched."""
         from cyclonedds._clayer import ddspy_write
+        if self.unsure:
+            pending, self.unsure = self.unsure, []
+            for item in pending:
+                self._request(*item)
         writer, reader = self.writer, self.reader
         if writer is None:
             self.outbox.clear()
-            self.waiting = False
+            self.waiting = bool(self.unsure)
+            return
+        if not self.outbox:
+            self.waiting = bool(self.unsure)
             return
         try:
             ready = (writer.get_matched_subscriptions() and reader.get_matched_publications())
@@ -660,7 +679,7 @@ class _Mirror:
         for data in self.outbox:
             ddspy_write(writer._ref, data)
         self.outbox.clear()
-        self.waiting = False
+        self.waiting = bool(self.unsure)
 
     def _on_reply(self):
         from labkit.interfaces import deserialize
