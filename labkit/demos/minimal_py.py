@@ -6,9 +6,8 @@ have three executables each (member function, local function, "old school"); the
 differ only in how the code is written, not in what a user sees, so all three start
 the same node here.
 """
-import labkit.rclpy as rclpy
+from labkit.demos.minimal import _run as _spin   # init, spin until Ctrl+C, clean up
 from labkit.interfaces import module
-from labkit.rclpy.executors import ExternalShutdownException
 from labkit.rclpy.node import Node
 
 String = module('std_msgs.msg').String
@@ -37,18 +36,6 @@ class Subscriber(Node):
 
     def heard(self, msg):
         self.get_logger().info(f'I heard: "{msg.data}"')
-
-
-def _spin(node_class, args):
-    rclpy.init(args=args)
-    node = node_class()
-    try:
-        rclpy.spin(node)
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass
-    finally:
-        node.destroy_node()
-        rclpy.try_shutdown()
 
 
 def publisher_main(args=None):
