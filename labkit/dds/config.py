@@ -10,6 +10,11 @@ MAX_DOMAIN_ID = 232
 # Fast DDS in LOCALHOST mode probes only the first few participant indexes:
 # Cyclone must take the lowest free one, and probe a few more itself.
 MAX_PARTICIPANT_INDEX = 32
+# Linux's default socket receive buffer (net.core.rmem_default): what a Fast DDS reader
+# (rmw_fastrtps' default) receives into, on the learner's robot as on this machine
+PEER_RECEIVE_BUFFER = 212992
+# the interface of localhost mode (sockets.confine binds Cyclone's wildcard sockets to it)
+LOOPBACK = "lo"
 
 
 class ConfigError(ValueError):
@@ -61,7 +66,7 @@ def cyclone_xml(localhost=True):
     else:
         # loopback carries 64 kB datagrams: a 640x480 image is 15 of them instead of
         # 63 (fewer datagrams overflow a peer's socket buffer less often)
-        general = ("<Interfaces><NetworkInterface name=\"lo\"/></Interfaces>"
+        general = (f"<Interfaces><NetworkInterface name=\"{LOOPBACK}\"/></Interfaces>"
                    "<AllowMulticast>false</AllowMulticast>"
                    "<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize>")
         peers = "" if localhost == "off" else "<Peers><Peer address=\"127.0.0.1\"/></Peers>"
@@ -73,8 +78,23 @@ def cyclone_xml(localhost=True):
             # a writer's unacknowledged history may hold whole images: Cyclone's default
             # high watermark (500 kB) is below one 640x480 frame, so every second write
             # blocked for max_blocking_time and then failed (a lost frame)
-            "<Internal><Watermarks><WhcHigh>32MB</WhcHigh></Watermarks></Internal>"
+            "<Internal><Watermarks><WhcHigh>32MB</WhcHigh></Watermarks>"
+            + ("" if localhost is False else _loopback_bursts()) + "</Internal>"
             "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
+
+
+def _loopback_bursts():
+    """On loopback a sample's datagrams arrive as fast as Cyclone sends them: a whole
+    640x480 image (15 datagrams of 62 kB) overran a Fast DDS reader's socket buffer, the
+    heartbeat sent after them was dropped too, the reader fell more than its history
+    depth behind and skipped frames. Cyclone assumes a peer that does not announce its
+    buffer has one as large as its own (2 MB here); send at most 2/3 of Linux's default
+    buffer at a time, the rest when the reader asks for it (NACKFRAG), as Cyclone does
+    for peers that announce a small buffer. MaxInitTransmit 0: a first transmission is
+    bounded like a retransmission. On a LAN the wire paces the sender: defaults there."""
+    burst = PEER_RECEIVE_BUFFER * 2 // 3
+    return (f"<BurstSize><MaxRexmit>{burst}B</MaxRexmit>"
+            "<MaxInitTransmit>0</MaxInitTransmit></BurstSize>")
 
 
 def with_user_config(xml):
