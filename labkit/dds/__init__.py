@@ -24,11 +24,10 @@ API cannot set): labkit prints one line with the remedy,
 RMW_IMPLEMENTATION=rmw_cyclonedds_cpp on the real side. 640x480 images from labkit to
 a Fast DDS process lose frames on a loaded machine (UDP bursts; see
 benchmarks/README.md). Cyclone binds its two unicast receive sockets to the wildcard
-address (it sends to and advertises 127.0.0.1 only): in the 11.0.1 library the bind
-address follows the socket's purpose (receive sockets bind to any), and its
-configuration has no element for it (NetworkInterface chooses what is advertised and
-sent on, not what is bound). No SROS2 security, no type_description service, no
-content-filtered topics.
+address (in the 11.0.1 library receive sockets bind to any, and no configuration
+element changes it): in localhost mode labkit binds them to the loopback device, so
+they take only datagrams sent from this machine (sockets.py). No SROS2 security, no
+type_description service, no content-filtered topics.
 
 Bad input on DDS: CYCLONEDDS_URI (files or XML, as rmw_cyclonedds_cpp reads it) is
 applied after labkit's own configuration; a message larger than its MaxSampleSize is

@@ -20,7 +20,7 @@ import time
 
 
 from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI
-from labkit.dds import config, discovery, wire
+from labkit.dds import config, discovery, sockets, wire
 
 BARE_NODE = "_CREATED_BY_BARE_DDS_APP_"
 FASTDDS_VENDOR = b"\x01\x0f"
@@ -82,9 +82,12 @@ class Bridge:
         self.last_discovery = time.monotonic()   # when discovery last brought news
         self._news = threading.Condition()        # notified when it does
         self._lock = threading.RLock()
+        before = sockets.open_sockets()
         self._domain = Domain(domain_id, config.with_user_config(config.cyclone_xml(localhost)))
         # rmw puts the security enclave in the participant's user data
         self.participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
+        # Cyclone binds its receive sockets to the wildcard address: on loopback only
+        self.loopback_sockets = sockets.confine(before, localhost is not False, config.LOOPBACK)
         self.guid = self.participant.guid.bytes
         self._topics = {}
         self._mirrors = {}            # local Endpoint -> _Mirror
