@@ -216,6 +216,44 @@ def test_pubsub_both_ways_string_twist_image_and_real_graph_queries(tmp_path, do
 
 
 @needs_rosref
+def test_image_stream_at_30_hz_reaches_a_real_subscriber_without_loss(tmp_path, domain):
+    """60 frames of 640x480 bgr8 at 30 Hz, labkit -> real rclpy (Fast DDS, its default
+    socket buffer and a keep-last-10 reader): every frame arrives, in order. Sent whole,
+    a frame overran the reader's socket buffer and the reader skipped frames."""
+    real_prog = real(tmp_path, "viewer", """
+        from sensor_msgs.msg import Image
+        rclpy.init(args=[])
+        node = rclpy.create_node('viewer')
+        got = []
+        node.create_subscription(Image, 'camera', lambda m: got.append(m.header.frame_id), 10)
+        print('ready', flush=True)
+        spin_until(node, lambda: '59' in got, 30)
+        spin_until(node, lambda: False, 0.5)
+        print('frames', ' '.join(got))
+    """, domain)
+    assert line_from(real_prog.stdout, lambda l: 'ready' in l, 20).strip() == 'ready'
+    lk_prog = labkit(tmp_path, "camera", """
+        from sensor_msgs.msg import Image
+        rclpy.init()
+        node = rclpy.create_node('camera')
+        pub = node.create_publisher(Image, 'camera', 10)
+        spin_until(node, lambda: pub.get_subscription_count() > 0, 20)
+        spin_until(node, lambda: False, 0.5)
+        img = Image(height=480, width=640, encoding='bgr8', step=1920)
+        img.data = bytes(640 * 480 * 3)
+        start = time.monotonic()
+        for i in range(60):
+            img.header.frame_id = str(i)
+            pub.publish(img)
+            spin_until(node, lambda: time.monotonic() >= start + (i + 1) / 30, 1)
+        spin_until(node, lambda: False, 1.0)
+    """, domain)
+    real_out, real_err = finish(real_prog, 40)
+    finish(lk_prog, 20)
+    assert "frames " + " ".join(str(i) for i in range(60)) + "\n" in real_out, real_out + real_err
+
+
+@needs_rosref
 def test_transient_local_late_joiner_and_labkit_cli_sees_real_node(tmp_path, domain):
     """A real subscriber that starts after labkit published a latched message still gets
     it; `labkit ros2 node list` / `node info` in another terminal show the real node."""

@@ -130,6 +130,20 @@ def test_discovery_reach_from_the_environment(monkeypatch):
     assert '<Peer address="127.0.0.1"/>' in xml
 
 
+def test_loopback_sends_a_large_sample_in_bursts_a_default_socket_buffer_holds():
+    """On loopback Cyclone sends at most 2/3 of Linux's default receive buffer of a
+    sample at once (then what the reader asks for); on a LAN its defaults stay."""
+    import re
+    xml = config.cyclone_xml(True)
+    burst = int(re.search(r"<MaxRexmit>(\d+)B</MaxRexmit>", xml).group(1))
+    assert burst == 212992 * 2 // 3
+    assert "<MaxInitTransmit>0</MaxInitTransmit>" in xml
+    fragment = int(re.search(r"<FragmentSize>(\d+)B", xml).group(1))
+    # whole fragments go out: the burst rounded up to fragments must still fit the buffer
+    assert -(-burst // fragment) * fragment < 212992
+    assert "BurstSize" not in config.cyclone_xml(False)
+
+
 def test_connect_refuses_virtual_time_in_one_line():
     import labkit
     from labkit import dds
