@@ -12,7 +12,8 @@ from book_support import BOOK
 
 TITLE = re.compile(r"^【(练习 [^】]+)】$", re.M)
 PASSED, FAILED = "全部正确！", "还差"
-CHAPTERS = sorted(p for p in BOOK.glob("part*/ch*.ipynb"))
+# the chapters, and the appendix notebooks (connect_real_ros has exercises too)
+CHAPTERS = sorted(BOOK.glob("part*/ch*.ipynb")) + sorted(BOOK.glob("*.ipynb"))
 
 
 def cell_text(cell) -> str:

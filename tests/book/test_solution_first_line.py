@@ -19,7 +19,7 @@ PREFIX = "# 参考答案"
 # tools/exercise_cells.py writes that first line into every solution cell.
 
 CHAPTERS = sorted(p for part in ("part1_basics", "part2_facer", "part3_tools")
-                  for p in (BOOK / part).glob("ch*.ipynb"))
+                  for p in (BOOK / part).glob("ch*.ipynb")) + sorted(BOOK.glob("*.ipynb"))
 
 
 def revealing_first_lines(nb) -> list[str]:
