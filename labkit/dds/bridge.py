@@ -493,14 +493,17 @@ class _Mirror:
             self.cls = _message_class(ep.type_name)
             dds_type = wire.type_to_dds(ep.type_name)
             name = wire.topic_to_dds(ep.name)
+            from labkit.dds import typehash   # Jazzy: the RIHS01 hash in the user data
+            ud = typehash.user_data(ep.type_name) if bridge.gid_size == discovery.JAZZY_GID else b""
             if kind == PUB:
-                self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos))
+                self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos, user_data=ud))
                 for msg in list(ep.history or ()):   # latched before the writer existed
                     self._publish(msg)
                 ep.bridge = self._publish
                 GRAPH.rematch(ep.name)
             else:
-                self.reader = bridge._reader(name, dds_type, wire.qos_to_dds(ep.qos, reader=True))
+                self.reader = bridge._reader(name, dds_type,
+                                             wire.qos_to_dds(ep.qos, reader=True, user_data=ud))
                 self.on_data = self._on_message
             return
         srv = _message_class(ep.type_name)

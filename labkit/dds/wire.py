@@ -99,11 +99,12 @@ def raw_type(dds_type):
 _INFINITE_NS = (0, 2**63 - 1)
 
 
-def qos_to_dds(qos, *, reader=False):
+def qos_to_dds(qos, *, reader=False, user_data=b""):
     """A cyclonedds Qos with the same reliability, durability, history, depth,
-    deadline, lifespan and liveliness as an rclpy QoSProfile (rmw's mapping)."""
+    deadline, lifespan and liveliness as an rclpy QoSProfile (rmw's mapping), and
+    `user_data` (Jazzy's `typehash=...;`) as the endpoint's USER_DATA."""
     from cyclonedds.qos import Qos, Policy
-    policies = []
+    policies = [Policy.Userdata(user_data)] if user_data else []
     rel = int(qos.reliability)
     policies.append(Policy.Reliability.BestEffort if rel == 2 else
                     Policy.Reliability.Reliable(max_blocking_time=100_000_000))
