@@ -122,8 +122,12 @@ def image_sink():
     from sensor_msgs.msg import Image
     rclpy.init(args=[])
     node = rclpy.create_node('bench_image_sink')
-    got = []
-    node.create_subscription(Image, 'image', lambda m: got.append(m.header.frame_id), 10)
+    got, delays = [], []
+
+    def frame(m):
+        got.append(m.header.frame_id)
+        delays.append(time.time() - m.header.stamp.sec - m.header.stamp.nanosec * 1e-9)
+    node.create_subscription(Image, 'image', frame, 10)
     print('ready', flush=True)
     end = time.monotonic() + 25
     while time.monotonic() < end and len(set(got)) < 90:
@@ -131,7 +135,21 @@ def image_sink():
         if got and got[-1] == '89':
             _spin(node, 0.5)
             break
-    print(json.dumps({'received': len(set(got))}))
+    print(json.dumps({'received': len(set(got)), 'socket_drops': socket_drops(),
+                      'delay_ms': statistics.median(delays) * 1e3 if delays else None}))
+
+
+def socket_drops():
+    """Datagrams the kernel dropped on this process's UDP sockets (a full receive
+    buffer), from /proc/net/udp; None where there is no such file."""
+    try:
+        inodes = {os.readlink(f'/proc/self/fd/{fd}')[8:-1] for fd in os.listdir('/proc/self/fd')
+                  if os.path.islink(f'/proc/self/fd/{fd}')}
+        rows = [line.split() for name in ('udp', 'udp6')
+                for line in Path(f'/proc/net/{name}').read_text().splitlines()[1:]]
+    except OSError:
+        return None
+    return sum(int(row[-1]) for row in rows if row[9] in inodes)
 
 
 def image_source():
@@ -146,6 +164,8 @@ def image_source():
     start = time.monotonic()
     for i in range(90):                  # 3 s at 30 Hz
         img.header.frame_id = str(i)
+        now = time.time()                # the sink's clock is this one: same machine
+        img.header.stamp.sec, img.header.stamp.nanosec = int(now), int(now % 1 * 1e9)
         pub.publish(img)
         while time.monotonic() < start + (i + 1) / 30:
             rclpy.spin_once(node, timeout_sec=0.005)
@@ -235,8 +255,11 @@ def image_rows():
         except RuntimeError as e:
             print(f'  {src:>6} -> {dst:<6} failed: {str(e).splitlines()[0]}')
             continue
+        delay = got['delay_ms']
         print(f'  {src:>8} -> {dst:<8} {got["received"]}/90 frames, '
-              f'{90 - got["received"]} lost')
+              f'{90 - got["received"]} lost, median delay '
+              + (f'{delay:.1f} ms' if delay is not None else '-')
+              + f', datagrams dropped by the reader\'s socket: {got["socket_drops"]}')
 
 
 def main():
