@@ -31,15 +31,29 @@ def _graph_node():
     import labkit.rclpy as rclpy
     from labkit.graph import world
 
-    if _node is not None and _node.context.ok():
+    domain = _current_domain()
+    if _node is not None and _node.context.ok() and _node.context.get_domain_id() == domain:
         world.settle()
         return _node
+    if _node is not None and _node.context.ok():   # the notebook joined another domain
+        _node.destroy_node()
     ctx = rclpy.get_default_context()
     if not ctx.ok():
         rclpy.init()
-    _node = rclpy.create_node("_labkit_exercise_checker", start_parameter_services=False)
+    if ctx.get_domain_id() != domain:
+        # the default context stays on the domain it was started on (as in ROS); the
+        # checker looks where the notebook is now (after labkit.connect(domain_id=N))
+        ctx = rclpy.Context()
+        ctx.init(args=[], domain_id=domain)
+    _node = rclpy.create_node("_labkit_exercise_checker", context=ctx,
+                              start_parameter_services=False)
     world.settle()
     return _node
+
+
+def _current_domain():
+    text = os.environ.get("ROS_DOMAIN_ID", "").strip()
+    return int(text) if text.isdigit() else 0
 
 
 class Verdict:
