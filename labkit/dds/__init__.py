@@ -21,9 +21,11 @@ started afterwards are on it); disconnect() and labkit.reset() put it back.
 What it does not do (yet): a real Fast DDS *client* calling a labkit service gets no
 reply (Fast DDS matches replies by the RTPS related-sample-identity, which Cyclone's
 API cannot set): labkit prints one line with the remedy,
-RMW_IMPLEMENTATION=rmw_cyclonedds_cpp on the real side. 640x480 images from labkit to
-a Fast DDS process lose frames on a loaded machine (UDP bursts; see
-benchmarks/README.md). Cyclone binds its two unicast receive sockets to the wildcard
+RMW_IMPLEMENTATION=rmw_cyclonedds_cpp on the real side. On loopback labkit sends a
+large sample in bursts a default Linux socket buffer holds (config.py): a 640x480 image
+reaches a Fast DDS reader whole, in about 24 ms (five round trips to it); the first
+fragmented sample of a Fast DDS writer just matched can be dropped by Cyclone's reader
+(see benchmarks/README.md). Cyclone binds its two unicast receive sockets to the wildcard
 address (in the 11.0.1 library receive sockets bind to any, and no configuration
 element changes it): in localhost mode labkit binds them to the loopback device, so
 they take only datagrams sent from this machine (sockets.py). No SROS2 security, no
