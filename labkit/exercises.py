@@ -145,7 +145,10 @@ class Checker:
         return ok
 
     def service(self, name: str, type_name: str | None = None) -> bool:
-        types = dict(_graph_node().get_service_names_and_types())
+        from labkit.graph.registry import GRAPH, SRV
+        node = _graph_node()   # a server, not just clients (which the service list shows)
+        with GRAPH.lock:
+            types = dict(GRAPH.names_and_types([SRV], node.context.get_domain_id()))
         if name not in types:
             return self.that(False, "", f"没有找到服务 {name}")
         if type_name is None:

@@ -575,8 +575,9 @@ class Node(ParameterMixin):
             return GRAPH.names_and_types([PUB, SUB], self._domain())
 
     def get_service_names_and_types(self):
+        # rmw lists every rq/rr topic, so a service with only clients is listed too
         with self.handle:
-            return GRAPH.names_and_types([SRV], self._domain())
+            return GRAPH.names_and_types([SRV, CLI], self._domain())
 
     def get_node_names(self):
         return [n[0] for n in self.get_node_names_and_namespaces()]

@@ -189,6 +189,8 @@ def twins(tmp_path_factory):
         assert raw.stdout.strip(), raw.stderr
         found["discovery_info"] = json.loads(raw.stdout)
         info = labkit_ros2(domain, "node", "info", "/real/twin", timeout=40)
+        found["labkit_service_list"] = labkit_ros2(domain, "service", "list", "-t",
+                                                   timeout=40).stdout
         yield found, info
     finally:
         for proc in (lk, twin_real):
@@ -304,3 +306,17 @@ def test_labkit_node_info_of_the_real_node_lists_what_real_rclpy_lists(twins):
         assert got.get(section, []) == expected, section
     assert ["/real/twin/get_type_description",
             ["type_description_interfaces/srv/GetTypeDescription"]] in got["Service Servers"]
+
+
+@needs_rosref
+def test_labkit_service_list_of_the_real_node_lists_what_real_rclpy_lists(twins):
+    """labkit's `ros2 service list -t` names the real node's services as real rclpy's
+    get_service_names_and_types does: its client-only /real/trigger included (rmw lists
+    every rq/rr topic), and the action's hidden services left out."""
+    found, _ = twins
+    got = [line for line in found["labkit_service_list"].splitlines()
+           if line.startswith("/real/")]
+    expected = [f"{name} [{', '.join(types)}]" for name, types in found["/real"]["service_types"]
+                if "/_action/" not in name]
+    assert got == expected
+    assert "/real/trigger [std_srvs/srv/Trigger]" in got
