@@ -505,6 +505,8 @@ class _Mirror:
                 self.reader = bridge._reader(name, dds_type,
                                              wire.qos_to_dds(ep.qos, reader=True, user_data=ud))
                 self.on_data = self._on_message
+            # its gid is now its DDS GUID, as peers and ros_discovery_info name it
+            ep.gid = discovery.make_gid((self.writer or self.reader).guid.bytes, bridge.gid_size)
             return
         srv = _message_class(ep.type_name)
         self.request_cls, self.response_cls = srv.Request, srv.Response

@@ -51,7 +51,15 @@ node.create_service(SetBool, 'set_flag', lambda req, resp: resp)
 node.create_client(Trigger, 'trigger')
 ActionServer(node, Fibonacci, 'fibonacci', lambda goal: Fibonacci.Result())
 ActionClient(node, Fibonacci, 'other_fibonacci')
-print('up', flush=True)
+import json
+last = [None]
+def own_gids():      # what this process says of its own endpoints, each time it changes
+    own = {t: [bytes(i.endpoint_gid).hex() for i in node.get_publishers_info_by_topic(t)
+               + node.get_subscriptions_info_by_topic(t)] for t in ('chatter', 'heard')}
+    if own != last[0]:
+        last[0] = own
+        print('own', json.dumps(own), flush=True)
+node.create_timer(0.1, own_gids)
 spin_until(node, lambda: False, 60)     # the test ends it
 """
 
@@ -178,10 +186,11 @@ def twins(tmp_path_factory):
         "__SHARE__", str(tmp_path / "share")), domain)
     twin_real = real(tmp_path, "real_twin", TWIN.replace("__NS__", "/real").replace(
         "__SHARE__", ""), domain)
+    found, info = {}, None
     try:
         out, err = finish(real(tmp_path, "reader", READER, domain), timeout=60)
         assert out.strip(), err
-        found = json.loads(out.strip().splitlines()[-1])
+        found.update(json.loads(out.strip().splitlines()[-1]))
         assert found["complete"], out + err
         raw = subprocess.run([sys.executable, "-c", DISCOVERY_INFO, str(domain)],
                              env=_env(domain, PYTHONPATH=str(REPO)), capture_output=True,
@@ -191,11 +200,13 @@ def twins(tmp_path_factory):
         info = labkit_ros2(domain, "node", "info", "/real/twin", timeout=40)
         found["labkit_service_list"] = labkit_ros2(domain, "service", "list", "-t",
                                                    timeout=40).stdout
-        yield found, info
     finally:
-        for proc in (lk, twin_real):
+        for ns, proc in (("/lk", lk), ("/real", twin_real)):
             proc.terminate()
-            finish(proc)
+            out, err = finish(proc)
+            own = [line for line in out.splitlines() if line.startswith("own ")]
+            found.setdefault("own", {})[ns] = json.loads(own[-1][4:]) if own else err
+    yield found, info
 
 
 JAZZY_ONLY = "/NS/twin/get_type_description"   # Jazzy's nodes have it; Humble's do not
@@ -237,8 +248,8 @@ def test_topic_info_verbose_reads_labkit_endpoints_as_a_real_nodes(twins):
 @needs_rosref
 def test_endpoint_gids_are_the_ones_labkits_ros_discovery_info_names(twins):
     """Each gid real rclpy reports for a labkit endpoint is a writer (publisher) or reader
-    (subscription) gid of /lk/twin in labkit's ros_discovery_info, as for the real twin;
-    the node owns one reader and one writer fewer than the real one (the request reader
+    (subscription) gid of /lk/twin in labkit's ros_discovery_info, as for the real twin,
+    and the one labkit's own get_publishers_info_by_topic names (its DDS GUID); the node owns one reader and one writer fewer than the real one (the request reader
     and reply writer of get_type_description, which Humble does not have)."""
     found, _ = twins
     info = found["discovery_info"]
@@ -249,6 +260,9 @@ def test_endpoint_gids_are_the_ones_labkits_ros_discovery_info_names(twins):
                 assert len(e["gid"]) == 32, e          # Jazzy's 16-byte gid
                 owned = writers if e["endpoint_type"] == "PUBLISHER" else readers
                 assert e["gid"] in owned, (ns, topic, e["gid"])
+    for ns in ("/lk", "/real"):      # the process itself names the same gids
+        for topic, gids in found["own"][ns].items():
+            assert gids == [e["gid"] for e in found[ns]["endpoints"][topic]], (ns, topic)
     lk_readers, lk_writers = info["/lk/twin"]
     real_readers, real_writers = info["/real/twin"]
     assert (len(lk_readers), len(lk_writers)) == (len(real_readers) - 1, len(real_writers) - 1)
