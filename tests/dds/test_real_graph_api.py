@@ -100,7 +100,8 @@ def endpoint(info):
             'lease': q.liveliness_lease_duration.nanoseconds}
 
 NS = ('/lk', '/real')
-TOPICS = ('chatter', 'latched', 'cmd_vel', 'timed', 'heard', 'everything')
+TOPICS = ('chatter', 'latched', 'cmd_vel', 'timed', 'heard', 'everything',
+          'fibonacci/_action/feedback', 'fibonacci/_action/status')
 def complete():
     for ns in NS:
         lists = by_node(ns)
@@ -235,7 +236,9 @@ def test_topic_info_verbose_reads_labkit_endpoints_as_a_real_nodes(twins):
     # what the real verb prints for labkit: a real hash (INVALID without one), the QoS given
     assert ep["chatter"]["topic_type_hash"] == \
         "RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18"
-    assert ep["cmd_vel"]["topic_type_hash"].startswith("RIHS01_")
+    for topic in ("cmd_vel", "fibonacci/_action/feedback", "fibonacci/_action/status"):
+        assert ep[topic]["topic_type_hash"].startswith("RIHS01_"), topic
+    assert ep["fibonacci/_action/status"]["durability"] == "TRANSIENT_LOCAL"
     assert (ep["chatter"]["node_name"], ep["chatter"]["node_namespace"]) == ("twin", "/NS")
     assert [ep[t]["endpoint_type"] for t in ("chatter", "heard")] == ["PUBLISHER", "SUBSCRIPTION"]
     assert (ep["chatter"]["history"], ep["chatter"]["depth"]) == ("UNKNOWN", 0)
