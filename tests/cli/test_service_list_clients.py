@@ -15,10 +15,7 @@ def client_main(args=None):
     node.create_client(get_type('std_srvs/srv/Trigger'), 'trigger')
     try:
         rclpy.spin(node)
-    except Exception:
-        pass
     finally:
-        node.destroy_node()
         rclpy.try_shutdown()
 
 
