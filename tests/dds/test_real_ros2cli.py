@@ -8,15 +8,17 @@ against the real ros2cli"); the reference venv's Python runs them. The same prog
 action client) runs once under `labkit exec` and once under real rclpy, each on its
 own domain; every verb must print the same lines for both, except what differs by
 nature (gids, the counter in the echoed message) and what only Jazzy's nodes have
-(the get_type_description service)."""
+(the get_type_description service). Then labkit's own verbs, run on the real nodes,
+must print what real ros2cli prints about them (less Jazzy's "Topic type hash" line,
+which Humble's ros2cli does not print)."""
 import os
 import re
 import subprocess
 
 import pytest
 
-from tests.dds.test_real_peers import (ROSREF, _domains, _env, finish, labkit, needs_rosref,
-                                       real)
+from tests.dds.test_real_peers import (ROSREF, _domains, _env, finish, labkit, labkit_ros2,
+                                       needs_rosref, real)
 
 CLI_PATH = os.environ.get("LABKIT_ROS2CLI_PATH")
 pytestmark = [needs_rosref, pytest.mark.skipif(
@@ -116,6 +118,21 @@ def test_real_ros2_verbs_print_the_same_for_labkit_as_for_real_nodes(tmp_path):
                 assert "Topic type hash: RIHS01_" in got and "INVALID" not in got
             if argv[:2] == ["node", "info"]:
                 assert ("get_type_description" in want) and ("get_type_description" not in got)
+        # and labkit's own verbs (Humble's texts) on the real nodes print what real ros2cli
+        # prints, less Jazzy's type hash line (not /rosout, /parameter_events: each CLI and
+        # the daemon publish there themselves)
+        for argv in VERBS:
+            if "/rosout" in argv or "/parameter_events" in argv:
+                continue
+            argv = [a for a in argv if a not in DIRECT]
+            for _ in range(4):
+                want = ros2(real_domain, argv)
+                want = "".join(line for line in want.splitlines(True)
+                               if not line.startswith("Topic type hash:"))
+                got = labkit_ros2(real_domain, *argv, timeout=60)
+                if normalise(got.stdout) == normalise(want) and want.strip():
+                    break
+            assert normalise(got.stdout) == normalise(want), "labkit ros2 " + " ".join(argv)
     finally:
         for domain in (lk_domain, real_domain):
             ros2(domain, ["daemon", "stop"])
