@@ -268,6 +268,7 @@ time.sleep = _process_sleep
 
 # ------------------------------------------------------------ output proxy
 _original = {"stdout": None, "stderr": None}
+_unflushed = {"stdout": False, "stderr": False}   # the main process wrote since a flush
 
 
 def flush_other(stream_name):
@@ -292,11 +293,19 @@ class _StreamProxy(io.TextIOBase):
     def write(self, text):
         proc = current()
         if proc is MAIN:
+            # a switch of stream sends what waits on the other one first, as a terminal
+            # would show it (a kernel sends each stream on its own timer otherwise)
+            other = "stderr" if self._name == "stdout" else "stdout"
+            if _unflushed[other]:
+                _unflushed[other] = False
+                flush_other(self._name)
+            _unflushed[self._name] = True
             return self._target.write(text)
         proc._write(self._name, text)
         return len(text)
 
     def flush(self):
+        _unflushed[self._name] = False
         try:
             self._target.flush()
         except Exception:

@@ -190,3 +190,24 @@ def test_what_the_cell_printed_first_reaches_the_notebook_first(monkeypatch):
     labkit.sleep(0.1)
     assert wire == [("stdout", "the cell prints first\n"), ("stderr", "[INFO] then a node\n")]
     assert not proc.running
+
+
+def test_the_cells_own_prints_and_log_lines_keep_their_order(monkeypatch):
+    """A node of the notebook itself logs to stderr between two prints: the kernel gets
+    them in that order (before, each stream went out on its own flush timer)."""
+    wire = []
+    out, err = KernelStream("stdout", wire), KernelStream("stderr", wire)
+    process.install_output_proxy()
+    for name, target in (("stdout", out), ("stderr", err)):
+        monkeypatch.setattr(getattr(sys, name), "_target", target)
+        monkeypatch.setitem(process._original, name, target)
+    monkeypatch.setattr(process, "_unflushed", {"stdout": False, "stderr": False})
+    print("goal accepted")
+    sys.stderr.write("[INFO] remaining: 0.5\n")
+    sys.stderr.write("[INFO] remaining: 0.1\n")
+    print("succeeded")
+    sys.stdout.flush()
+    sys.stderr.flush()
+    assert wire == [("stdout", "goal accepted\n"),
+                    ("stderr", "[INFO] remaining: 0.5\n[INFO] remaining: 0.1\n"),
+                    ("stdout", "succeeded\n")]
