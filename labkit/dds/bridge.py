@@ -20,7 +20,7 @@ import time
 
 
 from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI
-from labkit.dds import config, discovery, sockets, wire
+from labkit.dds import batching, config, discovery, sockets, wire
 
 BARE_NODE = "_CREATED_BY_BARE_DDS_APP_"
 FASTDDS_VENDOR = b"\x01\x0f"
@@ -139,10 +139,13 @@ class Bridge:
         from cyclonedds.qos import Qos, Policy
         return Qos(*qos, Policy.IgnoreLocal.Participant)
 
-    def _writer(self, name, dds_type, qos):
+    def _writer(self, name, dds_type, qos, batch=False):
         from cyclonedds.pub import DataWriter
-        return DataWriter(self.participant, self._topic(name, dds_type),
-                          qos=self._ignore_local(qos))
+        from cyclonedds.qos import Qos
+        qos = self._ignore_local(qos)
+        if batch:               # a topic's writer: see labkit.dds.batching
+            qos = Qos(*qos, batching.POLICY)
+        return DataWriter(self.participant, self._topic(name, dds_type), qos=qos)
 
     def _reader(self, name, dds_type, qos):
         from cyclonedds.sub import DataReader
@@ -200,6 +203,8 @@ class Bridge:
                     for mirror in list(self._mirrors.values()):
                         if mirror.reader is not None:
                             mirror.on_data()
+                        if mirror.batch is not None:
+                            mirror.batch.send()
                     if self._dirty:
                         self._dirty = False
                         self._sync_local()
@@ -484,7 +489,7 @@ class _Mirror:
     def __init__(self, bridge, ep):
         self.bridge = bridge
         self.ep = ep
-        self.reader = self.writer = None
+        self.reader = self.writer = self.batch = None
         self.waiting = False
         self.unsure = []          # requests whose sender discovery has not named yet
         self.outbox = []
@@ -496,7 +501,9 @@ class _Mirror:
             from labkit.dds import typehash   # Jazzy: the RIHS01 hash in the user data
             ud = typehash.user_data(ep.type_name) if bridge.gid_size == discovery.JAZZY_GID else b""
             if kind == PUB:
-                self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos, user_data=ud))
+                self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos, user_data=ud),
+                                             batch=True)
+                self.batch = batching.Batch(self.writer._ref, bridge.wake)
                 for msg in list(ep.history or ()):   # latched before the writer existed
                     self._publish(msg)
                 ep.bridge = self._publish
@@ -561,6 +568,7 @@ class _Mirror:
             if ddspy_write(writer._ref, data) == DDS_RETCODE_ERROR:
                 self.bridge.warn_once(("size", self.ep.name),
                                       OVERSIZE_LINE.format(name=self.ep.name, size=len(data)))
+            self.batch.wrote(len(data))
 
     def _on_message(self):
         from labkit.interfaces import deserialize

@@ -75,9 +75,13 @@ def cyclone_xml(localhost=True):
                      + peers)
     return ("<CycloneDDS><Domain Id=\"any\"><General>" + general + "</General>"
             "<Discovery>" + discovery + "</Discovery>"
-            # a writer's unacknowledged history may hold whole images: Cyclone's default
-            # high watermark (500 kB) is below one 640x480 frame, so every second write
-            # blocked for max_blocking_time and then failed (a lost frame)
+            # the watermarks bound only a KEEP_ALL writer's unacknowledged data: Cyclone
+            # 11.0.1 never blocks a KEEP_LAST one (ROS's usual depth N) on them. A KEEP_ALL
+            # writer past WhcHigh waits until WhcLow (1 kB) or max_blocking_time (labkit's
+            # 100 ms; then the sample is dropped); a sample larger than WhcHigh is still
+            # taken, the next write waits for it. rmw_cyclonedds_cpp keeps the 500 kB
+            # default but waits forever (DDS_INFINITY): 32 MB keeps labkit's KEEP_ALL
+            # writes from failing where rmw's would only wait (e.g. on 640x480 frames)
             "<Internal><Watermarks><WhcHigh>32MB</WhcHigh></Watermarks>"
             + ("" if localhost is False else _loopback_bursts()) + "</Internal>"
             "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
