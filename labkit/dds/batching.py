@@ -5,11 +5,13 @@ real rclpy can: one datagram each overran a real subscriber's socket buffer (ten
 thousands dropped, repaired by retransmits) and the peer's receive thread spent its core
 on datagrams. A topic writer created with `POLICY` (Cyclone's WRITER_BATCHING QoS) queues
 what it writes until `dds_write_flush`; `Batch.wrote` sends at once unless the writer is
-in a burst (`STREAK` of its writes since its last pause of `IDLE_S` each followed the
-previous one within `GAP_S`), and then every `MAX_PENDING` samples; the
-bridge thread, woken, sends what is left of a burst as soon as it gets the GIL (at once
-when the publishing thread waits; the publisher pausing less than `IDLE_S`, e.g. while the
-GIL is with that thread or the OS runs another process, neither sends nor ends the burst).
+in a burst (this write and `STREAK` before it, since its last pause of `IDLE_S`, each
+followed the previous one within `GAP_S`), and then every `limit` samples (the writer's
+history depth, at most `MAX_PENDING`: a reader as deep as the writer holds a whole batch);
+the bridge thread, woken, sends what is left of a burst as soon as it gets the GIL (at once
+when the publishing thread waits). A write after a pause of `GAP_S` or more goes out at
+once with the batch before it (a pause shorter than `IDLE_S`, e.g. the OS running another
+process, does not end the burst).
 Samples, their order, QoS and reliability are unchanged: only how many share a datagram
 (RTPS allows several DATA submessages in one). A publisher slower than 1/GAP_S messages
 per second (ping-pong, timers, real rclpy's own rate) sends every sample at once, as
@@ -66,8 +68,9 @@ def flush(writer_ref):
 class Batch:
     """When one batching writer's queued samples go out."""
 
-    def __init__(self, writer_ref, wake):
+    def __init__(self, writer_ref, wake, depth=MAX_PENDING):
         self.ref = writer_ref
+        self.limit = max(1, min(depth, MAX_PENDING))
         self.wake = wake              # asks the bridge thread to call send()
         self.last = 0.0
         self.streak = 0
@@ -81,7 +84,8 @@ class Batch:
             self.streak = 0
         elif gap < GAP_S:
             self.streak += 1
-        if self.streak < STREAK or size >= LARGE or self.pending >= MAX_PENDING:
+        if (gap >= GAP_S or self.streak < STREAK or size >= LARGE
+                or self.pending + 1 >= self.limit):
             self.pending = 0
             flush(self.ref)
         else:

@@ -503,7 +503,10 @@ class _Mirror:
             if kind == PUB:
                 self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos, user_data=ud),
                                              batch=True)
-                self.batch = batching.Batch(self.writer._ref, bridge.wake)
+                keep_all = int(ep.qos.history) == 2
+                self.batch = batching.Batch(self.writer._ref, bridge.wake,
+                                            batching.MAX_PENDING if keep_all
+                                            else int(ep.qos.depth or 10))
                 for msg in list(ep.history or ()):   # latched before the writer existed
                     self._publish(msg)
                 ep.bridge = self._publish
