@@ -6,7 +6,8 @@ peers' `ros_discovery_info`, become ordinary graph entries whose node is a
 `RemoteNode`. Nothing above this room knows whether a peer is local or remote.
 
 Threads: one bridge thread waits on a DDS WaitSet (the GIL is free while it
-waits), takes what arrived and hands it to local sinks, creates and deletes DDS
+waits), takes what arrived and hands it to local sinks, sends what is left of a fast
+publisher's batch (labkit.dds.batching), creates and deletes DDS
 entities and changes the remote part of the graph; a graph listener only wakes it.
 No Python code runs on Cyclone's own threads (no DDS listeners): a Python callback
 there would need the GIL while Cyclone holds its locks.
