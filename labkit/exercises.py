@@ -30,8 +30,9 @@ def _graph_node():
     global _node
     import labkit.rclpy as rclpy
     from labkit.graph import world
+    from labkit.rclpy.context import default_domain_id
 
-    domain = _current_domain()
+    domain = default_domain_id()
     if _node is not None and _node.context.ok() and _node.context.get_domain_id() == domain:
         world.settle()
         return _node
@@ -49,11 +50,6 @@ def _graph_node():
                               start_parameter_services=False)
     world.settle()
     return _node
-
-
-def _current_domain():
-    text = os.environ.get("ROS_DOMAIN_ID", "").strip()
-    return int(text) if text.isdigit() else 0
 
 
 class Verdict:

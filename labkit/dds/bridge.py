@@ -21,7 +21,7 @@ import time
 
 
 from labkit.graph.registry import GRAPH, NodeInfo, Endpoint, PUB, SUB, SRV, CLI
-from labkit.dds import batching, config, discovery, sockets, wire
+from labkit.dds import batching, config, discovery, sockets, typehash, wire
 
 BARE_NODE = "_CREATED_BY_BARE_DDS_APP_"
 FASTDDS_VENDOR = b"\x01\x0f"
@@ -499,7 +499,7 @@ class _Mirror:
             self.cls = _message_class(ep.type_name)
             dds_type = wire.type_to_dds(ep.type_name)
             name = wire.topic_to_dds(ep.name)
-            from labkit.dds import typehash   # Jazzy: the RIHS01 hash in the user data
+            # Jazzy: the RIHS01 hash in the user data
             ud = typehash.user_data(ep.type_name) if bridge.gid_size == discovery.JAZZY_GID else b""
             if kind == PUB:
                 self.writer = bridge._writer(name, dds_type, wire.qos_to_dds(ep.qos, user_data=ud),

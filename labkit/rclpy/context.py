@@ -8,6 +8,12 @@ from labkit.graph import arguments as _arguments
 from labkit.graph import world
 
 
+def default_domain_id():
+    """The domain a context started now would join: ROS_DOMAIN_ID, else 0."""
+    env = os.environ.get('ROS_DOMAIN_ID', '').strip()
+    return int(env) if env.isdigit() else 0
+
+
 class Context:
     """Encapsulates the lifecycle of init and shutdown."""
 
@@ -48,8 +54,7 @@ class Context:
             if parsed.unparsed_ros_args:
                 raise UnknownROSArgsError(repr([argv[i] for i in parsed.unparsed_ros_args]))
             if domain_id is None:
-                env = os.environ.get('ROS_DOMAIN_ID', '')
-                domain_id = int(env) if env.strip().isdigit() else 0
+                domain_id = default_domain_id()
             self._domain_id = domain_id
             self._arguments = parsed
             self.__context = {'args': argv}

@@ -177,13 +177,19 @@ class KernelStream(io.TextIOBase):
             self.buffer = ""
 
 
-def test_what_the_cell_printed_first_reaches_the_notebook_first(monkeypatch):
+def _kernel_wire(monkeypatch):
+    """The notebook's streams as kernel streams; returns the wire they flush onto."""
     wire = []
     out, err = KernelStream("stdout", wire), KernelStream("stderr", wire)
     process.install_output_proxy()
     for name, target in (("stdout", out), ("stderr", err)):
         monkeypatch.setattr(getattr(sys, name), "_target", target)
         monkeypatch.setitem(process._original, name, target)
+    return wire
+
+
+def test_what_the_cell_printed_first_reaches_the_notebook_first(monkeypatch):
+    wire = _kernel_wire(monkeypatch)
     print("the cell prints first")          # waits in the kernel's stdout buffer
     proc = process.start(main=lambda args=None: sys.stderr.write("[INFO] then a node\n"),
                          name="node")
@@ -195,12 +201,7 @@ def test_what_the_cell_printed_first_reaches_the_notebook_first(monkeypatch):
 def test_the_cells_own_prints_and_log_lines_keep_their_order(monkeypatch):
     """A node of the notebook itself logs to stderr between two prints: the kernel gets
     them in that order (before, each stream went out on its own flush timer)."""
-    wire = []
-    out, err = KernelStream("stdout", wire), KernelStream("stderr", wire)
-    process.install_output_proxy()
-    for name, target in (("stdout", out), ("stderr", err)):
-        monkeypatch.setattr(getattr(sys, name), "_target", target)
-        monkeypatch.setitem(process._original, name, target)
+    wire = _kernel_wire(monkeypatch)
     monkeypatch.setattr(process, "_unflushed", {"stdout": False, "stderr": False})
     print("goal accepted")
     sys.stderr.write("[INFO] remaining: 0.5\n")

@@ -14,7 +14,6 @@ A verb that does not use a running daemon spins its own node for `--spin-time`
 seconds before it looks, as ros2cli's DirectNode does; labkit's discovery is
 immediate, so only an explicit `--spin-time` is waited for.
 """
-import os
 
 from labkit.cli.ros2._base import add_verbs
 
@@ -32,8 +31,8 @@ def add_arguments(parser, cli_name):
 
 
 def _domain():
-    value = os.environ.get('ROS_DOMAIN_ID', '').strip()
-    return int(value) if value.isdigit() else 0
+    from labkit.rclpy.context import default_domain_id
+    return default_domain_id()
 
 
 def is_daemon_running():
