@@ -138,6 +138,7 @@ class Node(ParameterMixin):
         namespace = _names.normalize_namespace(
             _arguments.remap_namespace(self._rule_sets, node_name, namespace))
 
+        _refuse_unmappable_domain(self._context.get_domain_id())
         from labkit import process
         self._process = process.current()
         enclave = (glob.enclave if glob is not None and glob.enclave else '/')
@@ -652,6 +653,21 @@ def _discovered_qos(qos):
 
 def _bump_timers():
     _entity_bump()
+
+
+# Fast DDS (Humble's default rmw) maps a domain to UDP ports 7400 + 250 * domain + offset:
+# above 232 the port passes 65535 and the participant of the first node is refused; Fast DDS
+# prints this line and ends the whole process with EXIT_FAILURE (PortParameters.h)
+_MAX_MAPPABLE_DOMAIN_ID = 232
+
+
+def _refuse_unmappable_domain(domain_id):
+    if domain_id > _MAX_MAPPABLE_DOMAIN_ID:
+        import sys
+        sys.stdout.write('Calculated port number is too high. Probably the domainId is over '
+                         '232 or portBase is too high.\n')
+        sys.stdout.flush()
+        raise SystemExit(1)
 
 
 from labkit.rclpy._public import present as _present  # noqa: E402
