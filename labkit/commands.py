@@ -162,7 +162,7 @@ def emit(result, target=None, mode='w'):
             merged.append((name, text))
     chunks = merged
     if target is not None:
-        with open(target, mode) as f:
+        with open(target, mode, encoding='utf-8') as f:
             f.write(''.join(text for name, text in chunks if name == 'stdout'))
     for name, text in chunks:
         if name == 'stdout' and target is not None:

@@ -12,6 +12,7 @@ rosidl would, and labkit.interfaces generates the classes when imported.
 import os
 import shutil
 
+from labkit import oslayer
 from labkit.ament import cmake, envscripts, setup_py
 from labkit.ament.files import write_text as _write
 
@@ -59,13 +60,9 @@ class Context:
 def _place(src, dst, symlink):
     """Copy a file (or symlink it with --symlink-install), replacing what was there."""
     os.makedirs(os.path.dirname(dst), exist_ok=True)
-    if os.path.lexists(dst):
-        if os.path.isdir(dst) and not os.path.islink(dst):
-            shutil.rmtree(dst)
-        else:
-            os.unlink(dst)
-    if symlink:
-        os.symlink(os.path.abspath(src), dst)
+    oslayer.remove(dst)
+    if symlink:         # a copy where the OS refuses symlinks (Windows without Developer Mode)
+        oslayer.symlink(os.path.abspath(src), dst)
     else:
         shutil.copy2(src, dst)
 
@@ -81,10 +78,7 @@ def _place_tree(src, dst, symlink):
 
 
 def _clean(path):
-    if os.path.islink(path) or os.path.isfile(path):
-        os.unlink(path)
-    elif os.path.isdir(path):
-        shutil.rmtree(path)
+    oslayer.remove(path)
 
 
 def _common_install(ctx, with_manifest, with_marker, hooks=(), extra=()):

@@ -22,6 +22,7 @@ import datetime
 import os
 import time
 
+from labkit import oslayer
 from labkit.ament import build, workspace
 
 VERBS = ('build', 'list', 'test', 'test-result')
@@ -208,11 +209,9 @@ def _parser():
 
 def run_command(command):
     """Run one colcon command line (without the leading `colcon`)."""
-    import shlex
-
     from labkit.commands import CompletedCommand, ParserExit, Streams, set_parse_streams
     from labkit.commands import Recorder as _Recorder
-    argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
+    argv = oslayer.split_args(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['colcon']:
         argv = argv[1:]
     chunks = []
@@ -567,7 +566,7 @@ def execute(args, ordered, selected, clock, start, end, on_error=None):
 
 def _touch(path):
     if not os.path.exists(path):
-        open(path, 'w').close()
+        open(path, 'w', encoding='utf-8').close()
 
 
 def _new_log_dir(log_base):
@@ -582,10 +581,8 @@ def _new_log_dir(log_base):
         folder = os.path.join(log_base, name)
     os.makedirs(folder)
     for link, target in (('latest_build', name), ('latest', 'latest_build')):
-        path = os.path.join(log_base, link)
-        if os.path.lexists(path):
-            os.unlink(path)
-        os.symlink(target, path)
+        # a copy or a junction where the OS refuses symlinks (Windows without Developer Mode)
+        oslayer.replace_link(target, os.path.join(log_base, link), target_is_directory=True)
     return folder
 
 

@@ -213,9 +213,11 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
     # colcon reads pytest through a pipe: plain text, whatever the notebook's terminal says
     env['PY_COLORS'] = '0'
     env.pop('FORCE_COLOR', None)
+    env['PYTHONIOENCODING'] = 'utf-8'       # the pipe is read as UTF-8 on every OS
     started = time.monotonic()
     done = subprocess.run([sys.executable, '-m', 'pytest'], cwd=pkg.path, env=env,
-                          stdin=subprocess.DEVNULL, capture_output=True, text=True)
+                          stdin=subprocess.DEVNULL, capture_output=True, text=True,
+                          encoding='utf-8', errors='replace')
     measured = time.monotonic() - started
     counts = _counts(junit)
     virtual = world.mode() == 'virtual'

@@ -151,7 +151,7 @@ def packages():
     for name in sorted(os.listdir(HERE)):
         marker = os.path.join(HERE, name, 'share', 'colcon-core', 'packages', name)
         if os.path.isfile(marker):
-            with open(marker) as f:
+            with open(marker, encoding='utf-8') as f:
                 deps[name] = {d for d in f.read().strip().split(':') if d}
     ordered = []
     while deps:
@@ -166,7 +166,7 @@ def commands(prefix, dsv, shell, seen):
         return []
     seen.add(dsv)
     out = []
-    with open(os.path.join(prefix, dsv)) as f:
+    with open(os.path.join(prefix, dsv), encoding='utf-8') as f:
         lines = [line.rstrip('\\n') for line in f if line.strip()]
     described = {line.split(';', 1)[1][:-4] for line in lines
                  if line.startswith('source;') and line.endswith('.dsv')}

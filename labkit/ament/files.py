@@ -17,7 +17,9 @@ Without a sandbox, `~` is the real home folder and paths print unchanged.
 import os
 import shutil
 
-SHOWN_HOME = '/root'
+from labkit import oslayer
+
+SHOWN_HOME = oslayer.SHOWN_HOME
 
 _home = None        # the real folder standing for ~ (absolute), or None
 _created = None     # the outermost folder use_home() had to create
@@ -68,7 +70,7 @@ def expand(path):
     """`~` and `~/x` -> the real folder (as a shell expands them); others unchanged."""
     path = os.fspath(path)
     if path == '~' or path.startswith('~/'):
-        return home() + path[1:]
+        return oslayer.join_home(home(), path[2:])      # this OS's separators
     return path
 
 
@@ -77,12 +79,8 @@ def display(path):
     path = os.fspath(path)
     if path == '~' or path.startswith('~/'):
         path = expand(path)
-    if _home is not None and os.path.isabs(path):
-        if path == _home:
-            return SHOWN_HOME
-        if path.startswith(_home + os.sep):
-            return SHOWN_HOME + '/' + os.path.relpath(path, _home).replace(os.sep, '/')
-    return path
+    # /root/... inside the sandbox; '/' separators on every OS (`.\\pkg` -> `./pkg`)
+    return oslayer.shown_path(path, _home if _home is not None and os.path.isabs(path) else None)
 
 
 def display_abspath(path):
@@ -95,8 +93,8 @@ def write_text(path, text, mode=None):
     """Write a generated file (its folders made first), replacing a symlink left
     by --symlink-install instead of writing through it."""
     os.makedirs(os.path.dirname(path), exist_ok=True)
-    if os.path.islink(path):
-        os.unlink(path)
+    if oslayer.link_target(path) is not None:
+        oslayer.remove(path)
     with open(path, 'w', encoding='utf-8') as f:
         f.write(text)
     if mode is not None:
@@ -156,13 +154,13 @@ def tree_lines(path='.'):
             last = i == len(names) - 1
             full = os.path.join(folder, name)
             label = name
-            if os.path.islink(full):
-                target = os.readlink(full)
+            target = oslayer.link_target(full)     # also a link the OS made a copy of
+            if target is not None:
                 label += ' -> ' + (display(target) if os.path.isabs(target) else target)
             lines.append(prefix + ('└── ' if last else '├── ') + label)
             if os.path.isdir(full):
                 counts['dirs'] += 1
-                if not os.path.islink(full):
+                if target is None:
                     walk(full, prefix + ('    ' if last else '│   '))
             else:
                 counts['files'] += 1

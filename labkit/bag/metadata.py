@@ -117,7 +117,7 @@ def to_yaml(m):
 def write_metadata(directory, m):
     path = os.path.join(directory, METADATA_FILENAME)
     tmp = path + '.tmp'
-    with open(tmp, 'w') as f:
+    with open(tmp, 'w', encoding='utf-8') as f:
         f.write(to_yaml(m))
     os.replace(tmp, path)  # a reader never sees half a file
 
@@ -157,7 +157,7 @@ class _NotAMap(Exception):
 
 def _read_metadata(directory):
     import yaml
-    with open(os.path.join(directory, METADATA_FILENAME)) as f:
+    with open(os.path.join(directory, METADATA_FILENAME), encoding='utf-8') as f:
         document = yaml.safe_load(f)
     if not isinstance(document, dict):
         raise _NotAMap()

@@ -4,10 +4,9 @@
 MAGICS; it prints nothing on success. A magic prints like a terminal: stdout,
 then stderr, never a traceback; `> file` and `>> file` redirect stdout.
 """
-import shlex
 import sys
 
-from labkit import plugins
+from labkit import oslayer, plugins
 from labkit.commands import emit  # the plumbing lives one floor down (kept importable here)
 
 # magic name -> function(line): the registry in labkit.plugins, where later layers add
@@ -18,10 +17,8 @@ register = plugins.register_magic
 
 def split_redirect(line):
     """'param dump /t > t.yaml' -> (['param', 'dump', '/t'], 't.yaml', 'w')."""
-    lexer = shlex.shlex(line, posix=True, punctuation_chars='>')
-    lexer.whitespace_split = True
-    lexer.commenters = '#'   # `%ros2 node list  # comment` drops the comment, as a shell does
-    tokens = list(lexer)
+    # `%ros2 node list  # comment` drops the comment, as a shell does
+    tokens = oslayer.split_args(line, punctuation_chars='>', comments=True)
     target, mode = None, None
     for i, token in enumerate(tokens):
         if token in ('>', '>>'):
@@ -62,7 +59,7 @@ def ros2_magic(line):
         # handle: `job = %ros2 run ...`, later `job.stop()`
         return JobHandle(result)
     if target is not None:
-        with open(target, mode) as f:
+        with open(target, mode, encoding='utf-8') as f:
             f.write(result.stdout)
     # lines the command made without the recorder (early argument errors) still show
     if not echoed and (result.stdout or result.stderr) and target is None:
@@ -141,7 +138,7 @@ def _execution_count():
 def _redirect_job(process, target, mode):
     """`%ros2 topic echo /x > file`: the job's later stdout goes on to the file, as in a
     shell; its stderr still shows in the notebook."""
-    out = open(target, mode)
+    out = open(target, mode, encoding='utf-8')
 
     def sink(name, text):
         if name == 'stdout':

@@ -88,7 +88,8 @@ class Bridge:
         # rmw puts the security enclave in the participant's user data
         self.participant = DomainParticipant(domain_id, qos=Qos(Policy.Userdata(b"enclave=/;")))
         # Cyclone binds its receive sockets to the wildcard address: on loopback only
-        self.loopback_sockets = sockets.confine(before, localhost is not False, config.LOOPBACK)
+        self.loopback_sockets = sockets.confine(before, localhost is not False,
+                                                config.LOOPBACK_DEVICE)
         self.guid = self.participant.guid.bytes
         self._topics = {}
         self._mirrors = {}            # local Endpoint -> _Mirror

@@ -6,6 +6,8 @@ loopback interface, no multicast, the peer 127.0.0.1 (the LAN only when asked).
 """
 import os
 
+from labkit import oslayer
+
 MAX_DOMAIN_ID = 232
 # Fast DDS in LOCALHOST mode probes only the first few participant indexes:
 # Cyclone must take the lowest free one, and probe a few more itself.
@@ -13,8 +15,11 @@ MAX_PARTICIPANT_INDEX = 32
 # Linux's default socket receive buffer (net.core.rmem_default): what a Fast DDS reader
 # (rmw_fastrtps' default) receives into, on the learner's robot as on this machine
 PEER_RECEIVE_BUFFER = 212992
-# the interface of localhost mode (sockets.confine binds Cyclone's wildcard sockets to it)
-LOOPBACK = "lo"
+# localhost mode names the loopback by its address, which every OS has (the interface is
+# `lo` on Linux, `lo0` on macOS, and Windows has no such name); on Linux only,
+# sockets.confine also binds Cyclone's wildcard sockets to the device LOOPBACK_DEVICE
+LOOPBACK = oslayer.LOOPBACK_ADDRESS
+LOOPBACK_DEVICE = oslayer.LOOPBACK_DEVICE
 
 
 class ConfigError(ValueError):
@@ -66,7 +71,7 @@ def cyclone_xml(localhost=True):
     else:
         # loopback carries 64 kB datagrams: a 640x480 image is 15 of them instead of
         # 63 (fewer datagrams overflow a peer's socket buffer less often)
-        general = (f"<Interfaces><NetworkInterface name=\"{LOOPBACK}\"/></Interfaces>"
+        general = (f"<Interfaces><NetworkInterface address=\"{LOOPBACK}\"/></Interfaces>"
                    "<AllowMulticast>false</AllowMulticast>"
                    "<MaxMessageSize>65000B</MaxMessageSize><FragmentSize>62000B</FragmentSize>")
         peers = "" if localhost == "off" else "<Peers><Peer address=\"127.0.0.1\"/></Peers>"

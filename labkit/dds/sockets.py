@@ -21,6 +21,8 @@ import ipaddress
 import os
 import socket
 
+from labkit import oslayer
+
 
 def open_sockets(pid="self"):
     """{fd: inode} of the sockets of this process (or `pid`); {} where /proc is not there."""
@@ -43,10 +45,12 @@ def _is_loopback(host):
     return ipaddress.ip_address(host.split("%")[0]).is_loopback
 
 
-def confine(before, loopback, device="lo"):
+def confine(before, loopback, device=oslayer.LOOPBACK_DEVICE):
     """Handle the sockets opened since `before` (an `open_sockets()` result): all are
     made close-on-exec; with `loopback`, the UDP ones bound to the wildcard address are
-    bound to `device`. Returns the (host, port) of the sockets bound to it."""
+    bound to `device`. Returns the (host, port) of the sockets bound to it. Linux only
+    (oslayer.SOCKETS_CONFINABLE): elsewhere there is no /proc to list them and no
+    SO_BINDTODEVICE, and this returns []."""
     wildcard, specific = [], []
     for fd, inode in open_sockets().items():
         if before.get(fd) == inode:
@@ -65,7 +69,7 @@ def confine(before, loopback, device="lo"):
             wildcard.append((fd, host, port))
         else:
             specific.append(host)
-    if not loopback or not hasattr(socket, "SO_BINDTODEVICE") \
+    if not loopback or device is None or not hasattr(socket, "SO_BINDTODEVICE") \
             or not all(_is_loopback(host) for host in specific):
         return []
     bound = []

@@ -375,13 +375,13 @@ class ExecuteProcess(Action):
         return self.__output
 
     def execute(self, context):
-        import shlex
+        from labkit import oslayer
         cmd = [perform(context, c) for c in self.__cmd]
         if self.__name is not None:
             name = perform(context, self.__name)
         else:
             name = os.path.basename(cmd[0]) if cmd else ''
-        argv = shlex.split(' '.join(cmd)) if self.__shell else list(cmd)
+        argv = oslayer.split_args(' '.join(cmd)) if self.__shell else list(cmd)
         service = context.launch_service
         if self.__on_exit is not None:
             from labkit.launch.event_handlers import OnProcessExit

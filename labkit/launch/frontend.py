@@ -17,11 +17,11 @@ XML attributes are text, coerced to the type an attribute needs (YAML rules, as
 launch_xml does); `name-sep` splits a list. YAML values keep their own types.
 """
 import os
-import shlex
 import xml.etree.ElementTree as ET
 
 import yaml
 
+from labkit import oslayer
 from labkit.launch.launch_description import LaunchDescription
 from labkit.launch.launch_description_sources import InvalidLaunchFileError, _load_errors
 
@@ -462,7 +462,7 @@ def _cmdline(text):
         if not isinstance(sub, TextSubstitution):
             arg.append(sub)
             continue
-        tokens = shlex.split(sub.text)
+        tokens = oslayer.split_args(sub.text)
         if not tokens:
             if arg:
                 args.append(arg)

@@ -146,14 +146,14 @@ class Command(Substitution):
         return 'Command({})'.format(' + '.join(s.describe() for s in self.command))
 
     def perform(self, context):
-        import shlex
+        from labkit import oslayer
         mode = perform_substitutions(context, self.on_stderr)
         if mode not in _ON_STDERR:
             raise SubstitutionFailure('expected \'on_stderr\' to be one of: ' + ', '.join(
                 f"'{m}'" for m in _ON_STDERR[:-1]) + f" or '{_ON_STDERR[-1]}'")
         on_stderr = mode
         command_str = perform_substitutions(context, self.command)
-        argv = shlex.split(command_str)
+        argv = oslayer.split_args(command_str)
         code, out, err = _run_labkit_command(argv)
         if on_stderr == 'capture':
             out, err = out + err, ''

@@ -90,8 +90,8 @@ def _report(error):
 def run(command_line):
     """(returncode, stdout, stderr) of a `xacro ...` command line: what launch's
     `Command(['xacro ', model])` substitution needs without a shell."""
-    import shlex
+    from labkit import oslayer
     out, err = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(shlex.split(command_line))
+        code = main(oslayer.split_args(command_line))
     return code, out.getvalue(), err.getvalue()

@@ -66,7 +66,7 @@ def main(args=None):
             frames_gv = "frames_{:s}.gv".format(stamp)
             frames_pdf = "frames_{:s}.pdf".format(stamp)
         dot = generate_dot(data, clock.now().seconds_nanoseconds())
-        with open(frames_gv, "w") as f:
+        with open(frames_gv, "w", encoding="utf-8") as f:
             f.write(dot)
         with open(frames_pdf, "wb") as f:
             f.write(render(dot, "pdf"))
@@ -162,7 +162,7 @@ def svg(source=None, recorded_time=None, wait_time=1.0):
     elif isinstance(source, str) and source.lstrip().startswith(("digraph", "graph", "strict")):
         dot = source
     elif isinstance(source, (str, os.PathLike)) and str(source).endswith(".gv"):
-        with open(source) as f:
+        with open(source, encoding="utf-8") as f:
             dot = f.read()
     else:
         import yaml

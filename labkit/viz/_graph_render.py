@@ -274,7 +274,7 @@ def _graphviz_errors_only():
     import ctypes.util
     path = None
     try:
-        with open("/proc/self/maps") as maps:
+        with open("/proc/self/maps", encoding="utf-8") as maps:
             path = next((line.split()[-1] for line in maps if "libcgraph" in line), None)
     except OSError:
         pass

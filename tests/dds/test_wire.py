@@ -126,7 +126,7 @@ def test_discovery_reach_from_the_environment(monkeypatch):
     assert config.localhost_only() is False
     assert config.localhost_only(True) is True
     xml = config.cyclone_xml(True)
-    assert '<NetworkInterface name="lo"/>' in xml and "<AllowMulticast>false" in xml
+    assert '<NetworkInterface address="127.0.0.1"/>' in xml and "<AllowMulticast>false" in xml
     assert '<Peer address="127.0.0.1"/>' in xml
 
 

@@ -231,11 +231,10 @@ def _parser(io):
 
 def run_command(command):
     """Run one rosdep command line (without `rosdep`); returns a CompletedCommand."""
-    import shlex
-
+    from labkit import oslayer
     from labkit.commands import CompletedCommand, Streams
     from labkit.commands import Recorder as _Recorder
-    argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
+    argv = oslayer.split_args(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['rosdep']:
         argv = argv[1:]
     chunks = []

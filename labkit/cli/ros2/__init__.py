@@ -14,10 +14,9 @@ parser default `_background=lambda args: bool` makes it a job when true.
 """
 import argparse
 import importlib
-import shlex
 import traceback
 
-from labkit import plugins
+from labkit import oslayer, plugins
 from labkit.cli.ros2 import _base
 from labkit.cli.ros2._base import CliError, Parser, ParserExit, Streams
 # the command plumbing lives one floor down (tools use it too); kept importable from here
@@ -43,7 +42,7 @@ register_noun = plugins.register_noun
 
 
 def split_command(command):
-    argv = shlex.split(command) if isinstance(command, str) else [str(a) for a in command]
+    argv = oslayer.split_args(command) if isinstance(command, str) else [str(a) for a in command]
     if argv[:1] == ['ros2']:
         argv = argv[1:]
     return argv

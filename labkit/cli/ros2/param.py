@@ -321,7 +321,7 @@ def dump(args, io):
     io.eprint("WARNING: '--output-dir' is deprecated; use redirection to save to a file")
     path = os.path.join(args.output_dir, name.lstrip('/').replace('/', '__') + '.yaml')
     io.print('Saving to: ', path)
-    with open(path, 'w') as f:
+    with open(path, 'w', encoding='utf-8') as f:
         yaml.dump(document, f, default_flow_style=False)
 
 
@@ -347,7 +347,7 @@ def load(args, io):
     with CliNode() as node:
         name = _check_node(node, args)
         try:
-            with open(args.parameter_file) as f:
+            with open(args.parameter_file, encoding='utf-8') as f:
                 document = yaml.safe_load(f)
         except OSError as e:
             raise CliError(str(e))

@@ -8,6 +8,8 @@ no 3D scene or GUI; pictures come from render.py.
 import shlex
 import sys
 
+from labkit import oslayer
+
 from . import transport as gz
 
 
@@ -94,7 +96,7 @@ def ign_magic(line):
 def run(line):
     """Run an `ign` command line; `gazebo` returns its background job (or, if it failed at
     once, a finished command with returncode/stdout/stderr)."""
-    argv = shlex.split(line)
+    argv = oslayer.split_args(line)
     if not argv:
         print("usage: ign gazebo|topic ...", file=sys.stderr)
         return None
