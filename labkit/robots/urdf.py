@@ -154,10 +154,6 @@ class RobotModel:
             raise URDFError(f"Error parsing {where}: No link elements found in urdf file")
         self.joints = {}
         for j in self.urdf.joints:
-            for role, link in (("parent", j.parent), ("child", j.child)):
-                if link not in self.links:
-                    raise URDFError(f"Error parsing {where}: joint '{j.name}': {role} link "
-                                    f"'{link}' not found")
             if j.type in ("revolute", "prismatic") and j.limit is None:
                 raise URDFError(f"Error parsing {where}: joint '{j.name}' of type "
                                 f"'{j.type}' has no <limit> element")
@@ -166,17 +162,41 @@ class RobotModel:
         self.materials = {m.name: m for m in self.urdf.materials}
 
     def _find_root(self, where):
+        # urdfdom's ModelInterface::initTree, then initRoot: joints and links in name order
+        # (std::map), the child looked up before the parent, the texts of its ParseErrors
+        # after parseURDF's "Failed to build tree: " / "Failed to find root link: "
         parent_of = {}
-        for j in self.joints.values():
-            if j.child in parent_of:
-                raise URDFError(f"Error parsing {where}: link '{j.child}' has two parents")
+        twice = None
+        for name in sorted(self.joints):
+            j = self.joints[name]
+            if j.child not in self.links:
+                raise URDFError(f"Failed to build tree: child link [{j.child}] of joint "
+                                f"[{name}] not found")
+            if j.parent not in self.links:
+                raise URDFError(
+                    f"Failed to build tree: parent link [{j.parent}] of joint [{name}] not "
+                    "found.  This is not valid according to the URDF spec. Every link you "
+                    "refer to from a joint needs to be explicitly defined in the robot "
+                    f"description. To fix this problem you can either remove this joint "
+                    f"[{name}] from your urdf file, or add \"<link name=\"{j.parent}\" />\" "
+                    "to your urdf file.")
+            if j.child in parent_of and twice is None:
+                twice = j.child
             parent_of[j.child] = j.parent
-        roots = [name for name in self.links if name not in parent_of]
-        if len(roots) != 1:
-            found = " and ".join(f"[{r}]" for r in roots) or "none (a loop?)"
-            raise URDFError(f"Error parsing {where}: Failed to find root link: "
-                            f"expected one root link, found {found}")
-        return roots[0]
+        root = None
+        for name in sorted(self.links):
+            if name not in parent_of:
+                if root is not None:
+                    raise URDFError(f"Failed to find root link: Two root links found: "
+                                    f"[{root}] and [{name}]")
+                root = name
+        if root is None:
+            raise URDFError("Failed to find root link: No root link found. The robot xml is "
+                            "not a valid tree.")
+        if twice is not None:
+            # urdfdom lets the last joint win; KDL then meets the link twice and refuses
+            raise URDFError(f"Error parsing {where}: link '{twice}' has two parents")
+        return root
 
     # -- tree ----------------------------------------------------------------
     def movable_joints(self):
