@@ -118,17 +118,17 @@ PARAM_SERVICES = [
 
 def parameter_services(node_name: str) -> SVG:
     """The node's own parameter services, read from the live graph, and who calls them."""
-    from labkit.exercises import _graph_node
+    from labkit.commands import CliNode
 
-    probe = _graph_node()
     name = node_name if node_name.startswith("/") else "/" + node_name
     ns, _, base = name.rpartition("/")
     found = {}
-    try:
-        for srv, types in probe.get_service_names_and_types_by_node(base, ns or "/"):
-            found[srv] = types[0] if types else ""
-    except Exception:
-        found = {}
+    with CliNode("_labkit_figure") as probe:   # hidden, gone when the picture is drawn
+        try:
+            for srv, types in probe.get_service_names_and_types_by_node(base, ns or "/"):
+                found[srv] = types[0] if types else ""
+        except Exception:
+            found = {}
     body = [_heading(24, f"每个节点都自带 6 个参数服务：{name} 的（从计算图里读出来的）")]
     y = 44
     node_w = 160
@@ -441,21 +441,26 @@ def doctor_checks() -> SVG:
     from labkit.doctor.platform import PlatformCheck
     from labkit.doctor.qos_compatibility import QoSCompatibilityCheck
     from labkit.doctor.topic import TopicCheck
-    from labkit.exercises import _graph_node
 
     classes = {"NetworkCheck": NetworkCheck, "PackageCheck": PackageCheck,
                "PlatformCheck": PlatformCheck, "QoSCompatibilityCheck": QoSCompatibilityCheck,
                "TopicCheck": TopicCheck}
-    doctor = api.Doctor(_graph_node(), lambda *a, **k: None)
+    from labkit.commands import CliNode
+
+    results = {}
+    with CliNode("_labkit_figure") as node:    # as `ros2 doctor` does: hidden, gone after
+        doctor = api.Doctor(node, lambda *a, **k: None)
+        for name, _, _ in DOCTOR_CHECKS:
+            try:
+                result = classes[name]().check(doctor)
+                results[name] = (result.error, result.warning)
+            except Exception:
+                results[name] = (1, 0)
     body = [_heading(24, "ros2 doctor 跑的 5 项检查（此刻在这个计算图上跑的结果）")]
     y = 44
     failed = 0
     for name, label, what in DOCTOR_CHECKS:
-        try:
-            result = classes[name]().check(doctor)
-            bad, warn = result.error, result.warning
-        except Exception:
-            bad, warn = 1, 0
+        bad, warn = results[name]
         failed += bool(bad)
         if bad:
             fill, verdict = RED, "失败"

@@ -156,3 +156,14 @@ def test_dds_ports_follow_the_rtps_formula():
     s = _legible(fig.dds_discovery(domain_id=5))
     assert "ROS_DOMAIN_ID=5" in s and "UDP 8650" in s and "收不到" in s
     assert "收不到" not in _legible(fig.dds_discovery(domain_id=5, localhost_only=False))
+
+
+def test_drawing_leaves_no_node_behind(rclpy):
+    """The probes are hidden nodes of their own, gone when the picture is drawn: a later
+    `ros2 doctor --report` must not list them as publishers of /parameter_events."""
+    from labkit.graph.registry import GRAPH
+    rclpy.create_node("someone")
+    before = sorted(n.fqn for n in GRAPH.nodes)
+    fig.doctor_checks()
+    fig.parameter_services("/someone")
+    assert sorted(n.fqn for n in GRAPH.nodes) == before
