@@ -357,12 +357,12 @@ def package_lookup(package: str) -> SVG:
             fill, note, colour = GREY, "也有，但被上面的遮住了：不会被用到", "#777"
         else:
             fill, note, colour = "#fff", "没有这个包，接着往下找", "#999"
-        body.append(_rect(LEFT + 30, y, RIGHT - LEFT - 30, 34, fill=fill, dash=not has))
+        body.append(_rect(LEFT + 30, y, RIGHT - LEFT - 30, 48, fill=fill, dash=not has))
         body.append(_text(LEFT, y + 22, f"{k + 1}", 13, weight="bold"))
-        body.append(_text(LEFT + 40, y + 22, _fit(shown_prefix, 300, 12), 12, mono=True))
-        body.append(_text(LEFT + 350, y + 22, _fit(note, RIGHT - LEFT - 360, 12), 12,
-                          fill=colour))
-        y += 42
+        body.append(_text(LEFT + 40, y + 20, _fit(shown_prefix, RIGHT - LEFT - 60, 12), 12,
+                          mono=True))
+        body.append(_text(LEFT + 40, y + 39, note, 12, fill=colour))
+        y += 56
     if winner is None:
         body.append(_text(LEFT, y + 14, f"哪个前缀都没有 {package}：ros2 run 会说 "
                           f"Package '{package}' not found", 13, fill="#a00"))
