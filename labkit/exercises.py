@@ -12,12 +12,51 @@ Each check looks at the live graph (through a hidden node, as the ros2 CLI
 does) and records one line in Chinese: what is right, or what is missing and
 a hint. `report()` prints the lines and a summary and returns True when all
 passed, so a notebook can also `assert c.report()`.
+
+A check never crashes
+---------------------
+Whatever a learner's code leaves behind (a scalar where a list was meant, a
+name defined only inside a function, a server that died), the check must
+judge it, not show a traceback. Two guards do that:
+
+* In a notebook (IPython), creating a Checker arms a handler for the rest of
+  that cell: an exception escaping the cell before `report()` becomes one
+  ``[错]`` line naming it (``检查时出错：TypeError: ...``, one line), the
+  report is printed, and the cell ends normally (no traceback, "Run All"
+  goes on). The handler is disarmed when the cell ends.
+* Anywhere, ``with Checker("练习 2.2") as c: ...`` does the same: the block's
+  exception is recorded as a failed item and the report is printed on exit
+  (unless the block already called `report()` after its last check).
+
+Machine-readable results (for grading)
+--------------------------------------
+``Checker.result()`` returns a dict::
+
+    {"exercise": "练习 2.2",          # the title, as printed in 【】
+     "passed": False,                 # every item passed (and there was one)
+     "passed_items": ["节点 /heartbeat 正在运行", ...],
+     "failed_items": [{"text": "...the whole [错] line...",
+                       "hint": "...the part after the first '：', or the whole line"}]}
+
+Every `report()` also hands that dict to each callable in `REPORT_HOOKS`
+(``labkit.exercises.REPORT_HOOKS.append(fn)``) and, when the environment
+variable ``LABKIT_EXERCISE_LOG`` names a file, appends it there as one JSON
+line (UTF-8, ``ensure_ascii=False``) with two more keys: ``"notebook"`` (the
+value of ``LABKIT_NOTEBOOK`` if set, else null) and ``"time"`` (Unix seconds,
+wall clock). A hook that raises is ignored: grading never breaks a check.
 """
 from __future__ import annotations
 
+import json
 import os
+import time
 
 _node = None
+
+#: callables that receive every report's `Checker.result()` dict
+REPORT_HOOKS: list = []
+#: the environment variable naming a file that gets one JSON line per report
+LOG_ENV = "LABKIT_EXERCISE_LOG"
 
 # plain characters every Chinese font has (an emoji needs a font the reader may lack),
 # legible the same in the stored text, the HTML book and a terminal
@@ -84,6 +123,8 @@ class Checker:
     def __init__(self, title: str):
         self.title = title
         self.results: list[tuple[bool, str]] = []
+        self._reported_at = None        # len(results) when report() last ran
+        _arm_cell_guard(self)
 
     # -- the record ---------------------------------------------------------
     def that(self, ok: bool, good: str, bad: str) -> bool:
@@ -91,9 +132,24 @@ class Checker:
         self.results.append((bool(ok), good if ok else bad))
         return bool(ok)
 
+    def error(self, exc: BaseException, doing: str = "") -> bool:
+        """Record an exception met while checking as one failed item (never a traceback)."""
+        return self.that(False, "", _error_line(exc, doing))
+
     @property
     def passed(self) -> bool:
         return bool(self.results) and all(ok for ok, _ in self.results)
+
+    def result(self) -> dict:
+        """The report as data: exercise, passed, passed_items, failed_items (see the module doc)."""
+        failed = []
+        for ok, text in self.results:
+            if not ok:
+                head, sep, tail = text.partition("：")
+                failed.append({"text": text, "hint": tail if sep and tail else text})
+        return {"exercise": self.title, "passed": self.passed,
+                "passed_items": [text for ok, text in self.results if ok],
+                "failed_items": failed}
 
     def report(self) -> "Verdict":
         print(f"【{self.title}】")
@@ -106,7 +162,22 @@ class Checker:
             print(f"还差 {missing} 项，改好后再运行这个单元格。")
         else:
             print("全部正确！")
+        self._reported_at = len(self.results)
+        _publish(self.result())
         return Verdict(self.passed)
+
+    # -- the guard ----------------------------------------------------------
+    def __enter__(self) -> "Checker":
+        return self
+
+    def __exit__(self, etype, exc, tb) -> bool:
+        if exc is not None and not isinstance(exc, Exception):
+            return False                # KeyboardInterrupt, SystemExit: not ours to hide
+        if exc is not None:
+            self.error(exc)
+        if exc is not None or self._reported_at != len(self.results):
+            self.report()
+        return True
 
     # -- the graph ----------------------------------------------------------
     def node(self, name: str) -> bool:
@@ -253,3 +324,84 @@ def get_parameter(node_name: str, name: str, timeout_sec: float = 5.0):
         return parameter_value_to_python(value)
     finally:
         node.destroy_client(client)
+
+
+# -- errors, publishing, the notebook cell guard -----------------------------
+def _error_line(exc: BaseException, doing: str = "") -> str:
+    """One line naming an exception: 检查时出错：TypeError: 'float' object is not iterable."""
+    text = " ".join(str(exc).split())
+    name = type(exc).__name__
+    what = f"{name}: {text}" if text else name
+    return f"检查时出错{('（' + doing + '）') if doing else ''}：{what}"
+
+
+def _publish(result: dict) -> None:
+    for hook in list(REPORT_HOOKS):
+        try:
+            hook(dict(result))
+        except Exception:   # grading must never break a learner's check
+            pass
+    path = os.environ.get(LOG_ENV)
+    if path:
+        line = dict(result, notebook=os.environ.get("LABKIT_NOTEBOOK"), time=time.time())
+        try:
+            with open(path, "a", encoding="utf-8") as f:
+                f.write(json.dumps(line, ensure_ascii=False) + "\n")
+        except OSError:
+            pass
+
+
+_armed: list = []          # the checkers created in the running cell
+_saved_handler = None      # IPython's custom-exception setting before we armed
+
+
+def _arm_cell_guard(checker: "Checker") -> None:
+    """In IPython: until this cell ends, an exception escaping it is judged by the
+    checker (one [错] line, the report) instead of printed as a traceback."""
+    global _saved_handler
+    try:
+        from IPython import get_ipython
+        shell = get_ipython()
+    except Exception:
+        return
+    if shell is None or not hasattr(shell, "set_custom_exc"):
+        return
+    _armed.append(checker)
+    if len(_armed) > 1:
+        return
+    _saved_handler = (shell.custom_exceptions, shell.CustomTB)
+    shell.set_custom_exc((Exception,), _cell_exception)
+    shell.events.register("post_run_cell", _disarm)
+
+
+def _cell_exception(shell, etype, value, tb, tb_offset=None):
+    checker = _armed[-1] if _armed else None
+    if checker is None or checker._reported_at == len(checker.results) and checker._reported_at:
+        # the exception is not the check's (it came after the report): show it as usual
+        shell.showtraceback((etype, value, tb), tb_offset=tb_offset)
+        return []
+    checker.error(value)
+    checker.report()
+    checker._handled_exception = True
+    return []
+
+
+def _disarm(result=None) -> None:
+    global _saved_handler
+    from IPython import get_ipython
+    shell = get_ipython()
+    handled = any(getattr(c, "_handled_exception", False) for c in _armed)
+    _armed.clear()
+    if shell is not None:
+        try:
+            shell.events.unregister("post_run_cell", _disarm)
+        except ValueError:
+            pass
+        if _saved_handler is not None:
+            exc_tuple, custom_tb = _saved_handler
+            shell.custom_exceptions = exc_tuple
+            shell.CustomTB = custom_tb
+    _saved_handler = None
+    if handled and result is not None and isinstance(result.error_in_exec, Exception):
+        # the check judged the exception: the cell did its job, it did not fail
+        result.error_in_exec = None
