@@ -66,9 +66,9 @@ def _info_args(p):
 
 
 def info(args, io):
-    from labkit.bag.storage import BagError, read_bag_metadata
+    from labkit.bag.storage import BagError, info_metadata
     try:
-        metadata = read_bag_metadata(args.bag_path, args.storage)
+        metadata = info_metadata(args.bag_path, args.storage)
     except BagError as e:
         return str(e)
     io.print(metadata)

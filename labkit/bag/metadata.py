@@ -136,9 +136,34 @@ def _yaml_cpp_what(error):
                 '(key: "rosbag2_bagfile_information")')
     mark = getattr(error, 'problem_mark', None)
     if isinstance(error, yaml.MarkedYAMLError) and mark is not None:
-        problem = error.problem or error.context or 'parse error'
+        problem, mark = _yaml_cpp_problem(error, mark)
         return f'yaml-cpp: error at line {mark.line + 1}, column {mark.column + 1}: {problem}'
     return 'yaml-cpp: error at line 0, column 0: bad conversion'
+
+
+def _yaml_cpp_problem(error, mark):
+    """yaml-cpp's ErrorMsg (and where it marks it) for what PyYAML found: the same faults,
+    other words (yaml-cpp 0.7's exceptions.h, as yaml_cpp_vendor ships it in Humble)."""
+    problem = error.problem or error.context or 'parse error'
+    context = error.context or ''
+    if problem == 'mapping values are not allowed here':
+        return 'illegal map value', mark
+    if problem.startswith("expected ',' or ']'"):
+        return 'end of sequence flow not found', mark
+    if problem.startswith("expected ',' or '}'"):
+        return 'end of map flow not found', mark
+    if problem.startswith('expected <block end>'):
+        if 'mapping' in context:
+            return 'end of map not found', mark
+        return 'end of sequence not found', mark
+    if problem == "could not find expected ':'":
+        # yaml-cpp meets a scalar where a key should be, where it starts
+        return 'end of map not found', error.context_mark or mark
+    if problem == 'found unexpected end of stream' and 'quoted scalar' in context:
+        return 'illegal EOF in scalar', mark
+    if problem.startswith('found undefined alias'):
+        return 'the referenced anchor is not defined', mark
+    return problem, mark
 
 
 def read_metadata(directory):

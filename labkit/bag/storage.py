@@ -444,14 +444,43 @@ def open_writer(uri, storage_id=''):
 
 # --------------------------------------------------------------------------- reading
 
-def _file_reader(path, storage_id):
-    """The storage plugin's reader for one file; a file it cannot open: rosbag2's line."""
+def _file_reader(path, storage_id, listed=False):
+    """The storage plugin's reader for one file; a file it cannot open: rosbag2's line.
+
+    `listed`: the file is named by metadata.yaml (SequentialReader::load_current_file):
+    Humble's StorageFactory logs why the plugin could not open it, then the reader aborts."""
     if storage_id == 'mcap' or path.endswith('.mcap'):
         return _McapReader(path)
     try:
         return _SqliteReader(path)
-    except sqlite3.Error:
-        raise BagError('No storage could be initialized from the inputs.') from None
+    except sqlite3.Error as e:
+        if not listed:
+            raise BagError('No storage could be initialized from the inputs.') from None
+        from labkit.rclpy.logging import get_logger
+        log = get_logger('rosbag2_storage')
+        log.error(f"Could not open '{path}' with 'sqlite3'. Error: Failed to setup storage. "
+                  f"Error: {_sqlite_what(e)}")
+        log.error("Could not load/open plugin with storage id 'sqlite3'")
+        raise BagError('No storage could be initialized. Abort') from None
+
+
+# sqlite3_errstr() of the primary result codes a broken bag file gives
+_SQLITE_ERRSTR = {5: 'database is locked', 8: 'attempt to write a readonly database',
+                  10: 'disk I/O error', 11: 'database disk image is malformed',
+                  13: 'database or disk is full', 14: 'unable to open database file',
+                  26: 'file is not a database'}
+
+
+def _sqlite_what(error):
+    """SqliteStatementWrapper::execute_and_reset's text for a failed step (the first one
+    Humble's SqliteWrapper runs on open is `PRAGMA schema_version;`; extended result codes
+    are switched on only after it)."""
+    code = getattr(error, 'sqlite_errorcode', None)
+    if code is None:
+        return f'SQL error: {error}'
+    code &= 0xff
+    return (f'Error when processing SQL statement. SQLite error ({code}): '
+            f'{_SQLITE_ERRSTR.get(code, str(error))}')
 
 
 class _SqliteReader:
@@ -466,12 +495,16 @@ class _SqliteReader:
             self.conn = sqlite3.connect(f'file:{os.path.abspath(path)}?mode={mode}', uri=True,
                                         check_same_thread=False)
             try:
+                self.conn.execute('PRAGMA schema_version;').fetchall()   # as SqliteWrapper
                 rows = self.conn.execute(query).fetchall()
                 break
             except sqlite3.OperationalError:
                 self.conn.close()
                 if mode == 'rw':
                     raise
+            except sqlite3.Error:
+                self.conn.close()
+                raise
         for tid, name, typ, fmt, qos in rows:
             self.topics[tid] = TopicMetadata(name, typ, fmt, qos)
 
@@ -552,7 +585,8 @@ class BagReader:
         directory = uri if os.path.isdir(uri) else os.path.dirname(uri) or '.'
         paths = [os.path.join(directory, p) for p in self.metadata.relative_file_paths] \
             if os.path.isdir(uri) else [uri]
-        self.files = [_file_reader(p, self.storage_id) for p in paths]
+        listed = os.path.isdir(uri) and os.path.exists(os.path.join(uri, METADATA_FILENAME))
+        self.files = [_file_reader(p, self.storage_id, listed) for p in paths]
         if self.metadata.relative_file_paths and self.storage_id == 'sqlite3':
             storage_log(f"Opened database '{paths[0]}' for READ_ONLY.")
 
@@ -596,7 +630,9 @@ def _stale(directory, m):
                 last = conn.execute('SELECT MAX(id) FROM messages').fetchone()[0] or 0
             finally:
                 conn.close()
-        except sqlite3.Error:
+        except sqlite3.Error as e:
+            if (getattr(e, 'sqlite_errorcode', 0) & 0xff) in (11, 26):
+                return False  # a broken file: opening it says so (metadata.yaml is whole)
             return True  # a hot journal: let the reindexing reader roll it back
         if last > f.message_count:
             return True
@@ -643,6 +679,23 @@ def read_bag_metadata(uri, storage_id=''):
         relative_file_paths=names, files=files, duration=end - start, starting_time=start,
         message_count=sum(f.message_count for f in files),
         topics_with_message_count=list(topics.values()))
+
+
+def info_metadata(uri, storage_id=''):
+    """rosbag2_cpp::Info::read_metadata (`ros2 bag info`, rosbag2_py.Info): metadata.yaml,
+    or a single storage file asked directly; a folder without metadata.yaml is refused
+    (`ros2 bag reindex` makes one)."""
+    uri = os.fspath(uri)
+    if not os.path.exists(uri):
+        raise BagError(f'Bag path {uri} does not exist.')
+    if os.path.isdir(uri) and not os.path.exists(os.path.join(uri, METADATA_FILENAME)):
+        raise BagError(f'Could not find metadata in bag directory {uri}')
+    if not os.path.isdir(uri):
+        try:
+            return read_bag_metadata(uri, storage_id)
+        except BagError:
+            raise BagError(f'No plugin detected that could open file {uri}') from None
+    return read_bag_metadata(uri, storage_id)
 
 
 def open_reader(uri, storage_id=''):

@@ -180,8 +180,8 @@ def test_sigkilled_recording_keeps_what_came_before_and_reindex_repairs_it(tmp_p
 
 
 def test_info_on_a_killed_mcap_without_metadata_reads_the_file(bag_dir):
-    """No metadata.yaml and a cut file: info reads what is whole, without advice that
-    cannot help."""
+    """No metadata.yaml and a cut file: info on the folder says what Humble's
+    rosbag2_cpp::Info says; on the file itself it reads what is whole."""
     from labkit.bag.metadata import TopicMetadata
     from labkit.bag.storage import BagWriter
     String = ifc.get_type('std_msgs/msg/String')
@@ -194,6 +194,8 @@ def test_info_on_a_killed_mcap_without_metadata_reads_the_file(bag_dir):
         bag.write('/data', ifc.serialize(String(data=str(n))), 1000 + n)
     bag.file.writer.file.flush()         # the open chunk never made it: as after a SIGKILL
     r = labkit.ros2('bag info cut')
+    assert (r.returncode, r.stderr) == (1, 'Could not find metadata in bag directory cut\n')
+    r = labkit.ros2('bag info cut/cut_0.mcap')
     assert r.returncode == 0, r.stderr
     assert 'Messages:          30\n' in r.stdout and 'reindex' not in r.stderr
 
