@@ -54,7 +54,17 @@ class Publisher:
 
     def get_subscription_count(self):
         with self._handle:
-            return len(self._endpoint.matched)
+            ep = self._endpoint
+            if ep.bridge is None:
+                return len(ep.matched)
+            # on DDS, `matched` also holds the DDS writer (one for every remote reader, and
+            # always for TRANSIENT_LOCAL): count the subscriptions themselves, as rmw does
+            from labkit.graph import registry
+            with registry.GRAPH.lock:
+                subs = list(registry.GRAPH.endpoints[registry.SUB].get(ep.name, ()))
+            domain = ep.node.domain_id
+            return sum(1 for sub in subs if sub.node.domain_id == domain
+                       and registry._compatible(ep.qos, sub.qos)[0])
 
     def assert_liveliness(self):
         with self._handle:
