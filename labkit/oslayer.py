@@ -103,7 +103,9 @@ def symlink(target, path, *, target_is_directory=None):
     is_dir = os.path.isdir(full) if target_is_directory is None else target_is_directory
     try:
         os.symlink(target, path, target_is_directory=is_dir)
-        return 'symlink'
+        if os.path.lexists(path):
+            return 'symlink'
+        # Wine 8's CreateSymbolicLinkW says yes and makes nothing: treat it as refused
     except (OSError, NotImplementedError) as exc:
         if not _refused(exc):
             raise
@@ -116,6 +118,8 @@ def symlink(target, path, *, target_is_directory=None):
             _junction(full, path)
             how = 'junction'
         except OSError:
+            if os.path.isdir(path) and not os.listdir(path):
+                os.rmdir(path)      # CreateJunction made the folder, then failed (Wine)
             shutil.copytree(full, path, symlinks=False)
     else:
         shutil.copy2(full, path)
@@ -194,6 +198,18 @@ def shown_path(path, home=None, *, sep=None):
     if sep != '/' and not _is_abs_windows(path):
         return path.replace(sep, '/')
     return path
+
+
+def slashes_after(text, starts, *, sep=None):
+    """In text holding paths: the part of each path after one of `starts` (e.g. '/root/')
+    written with '/' (`/root/ws\\install` -> `/root/ws/install`)."""
+    import re
+    sep = os.sep if sep is None else sep
+    if sep == '/':
+        return text
+    alternatives = '|'.join(re.escape(s) for s in starts)
+    return re.sub(f'({alternatives})([^\\s;"\']*)',
+                  lambda m: m.group(1) + m.group(2).replace(sep, '/'), text)
 
 
 def _is_abs_windows(path):

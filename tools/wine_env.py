@@ -45,7 +45,7 @@ PY_VERSION = '3.11.9'
 WINE_OVERRIDES = {'numpy': '2.0.2', 'rpds-py': '0.18.1', 'jsonschema': '4.23.0'}
 # What the Windows test job imports: labkit's own dependencies (pyproject.toml) and the
 # test runner with nbval and a kernel for the notebooks.
-EXTRA_TOP = ['pytest', 'nbval', 'ipykernel', 'colorama']
+EXTRA_TOP = ['pytest', 'nbval', 'ipykernel', 'colorama', 'mcap']
 
 
 def wine():

@@ -355,7 +355,7 @@ def list_verb(args, io, clock):
     if not args.topological_order:
         selected = sorted(selected, key=lambda p: p.name)
     for p in selected:
-        path = os.path.relpath(p.path)
+        path = oslayer.shown_path(os.path.relpath(p.path))     # src/pkg on every OS
         if args.names_only:
             io.print(p.name)
         elif args.paths_only:

@@ -29,6 +29,8 @@ import time
 import types
 import xml.etree.ElementTree as ElementTree
 
+from labkit import oslayer
+
 LINTERS = {       # module -> functions the pkg create templates call
     'ament_copyright': ('main',),
     'ament_flake8': ('main', 'main_with_errors'),
@@ -201,7 +203,8 @@ def _run_pytest(pkg, result_base, site_dirs, pytest_args):
         options += ['-c', os.devnull, f'--rootdir={pkg.path}']
     options += [a.strip() for a in pytest_args]
     env = dict(os.environ)
-    env['PYTEST_ADDOPTS'] = ' '.join(a if ' ' not in a else f'"{a}"' for a in options)
+    # pytest splits PYTEST_ADDOPTS with POSIX shlex: quoted, a Windows path keeps its '\\'
+    env['PYTEST_ADDOPTS'] = ' '.join(oslayer.quote_arg(a) for a in options)
     labkit_root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     env['PYTHONPATH'] = os.pathsep.join(
         [*site_dirs, *[p for p in env.get('PYTHONPATH', '').split(os.pathsep) if p],
@@ -279,11 +282,12 @@ def _shown(line, cost, virtual):
     from labkit.ament import files
     home = files.home()
     if files._home is not None:
-        line = line.replace(home, files.SHOWN_HOME)
+        line = oslayer.slashes_after(line.replace(home, files.SHOWN_HOME),
+                                     (files.SHOWN_HOME,))
     if line.startswith('configfile: ') and line.endswith(os.devnull.lstrip('/')):
         return None
     if virtual:
-        if line.startswith('platform linux -- '):
+        if line.startswith('platform ') and ' -- Python ' in line:   # win32, darwin too
             return HUMBLE_PLATFORM
         line = re.sub(r' in \d+\.\d+s( \([0-9:]+\))? (=+)$', f' in {cost:.2f}s \\2', line)
     return _recentre(line)
@@ -320,7 +324,7 @@ class Result:
     def __str__(self):
         def n(count, word):
             return f'{count} {word}' + ('' if count == 1 else 's')
-        return (f'{self.path}: {n(self.tests, "test")}, {n(self.errors, "error")}, '
+        return (f'{oslayer.shown_path(self.path)}: {n(self.tests, "test")}, {n(self.errors, "error")}, '
                 f'{n(self.failures, "failure")}, {self.skipped} skipped')
 
 
@@ -395,7 +399,7 @@ def test_result_verb(args, io, clock):
                    key=lambda r: r.path)
     for r in shown:
         if args.result_files_only:
-            io.print(r.path)
+            io.print(oslayer.shown_path(r.path))
             continue
         io.print(str(r))
         if args.verbose:

@@ -7,6 +7,8 @@ a read-only folder inside labkit standing for /opt/ros/humble.
 """
 import os
 
+from labkit import oslayer
+
 RESOURCE_INDEX = os.path.join('share', 'ament_index', 'resource_index')
 # Bundled packages (turtlesim, std_msgs, ...): what a Humble binary install reports.
 SHOWN_INSTALL_PREFIX = '/opt/ros/humble'
@@ -164,4 +166,5 @@ def shown(text):
     home = files.home()
     if files._home is not None:
         text = text.replace(home + os.sep, files.SHOWN_HOME + '/')
-    return text
+    # '/' in the Ubuntu paths on every OS (Windows joins with '\\')
+    return oslayer.slashes_after(text, (SHOWN_INSTALL_PREFIX + '/', files.SHOWN_HOME + '/'))
