@@ -2,6 +2,7 @@
 
     labkit exec [--time live|virtual] FILE [ARGS...]   run a ROS 2 Python program on labkit
     labkit ros2 VERB ...                                 run a ros2 verb (interface show, ...)
+    labkit lab [--root DIR] [JUPYTERLAB OPTIONS...]      the book in JupyterLab, live time
 """
 import argparse
 import os
@@ -14,7 +15,7 @@ def main(argv=None):
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = argparse.ArgumentParser(
         prog='labkit', description='Run ROS 2 Python programs and ros2 verbs on labkit.')
-    commands = parser.add_subparsers(dest='command', metavar='{exec,ros2}')
+    commands = parser.add_subparsers(dest='command', metavar='{exec,ros2,lab}')
     p_exec = commands.add_parser('exec', help='run FILE as __main__ with rclpy = labkit')
     p_exec.add_argument('--time', choices=('live', 'virtual'), default='live',
                         help='time mode (default: live, like a real ROS 2 process)')
@@ -22,9 +23,13 @@ def main(argv=None):
     p_exec.add_argument('args', nargs=argparse.REMAINDER, metavar='ARGS')
     p_ros2 = commands.add_parser('ros2', help='run a ros2 verb', add_help=False)
     p_ros2.add_argument('args', nargs=argparse.REMAINDER)
+    commands.add_parser('lab', help='open the book in JupyterLab (live time)', add_help=False)
     # argparse would eat the script's own options: split at FILE ourselves.
     if argv[:1] == ['ros2']:
         return ros2_main(argv[1:])
+    if argv[:1] == ['lab']:
+        from labkit.tools import lab
+        return lab.main(argv[1:])
     args = parser.parse_args(argv)
     if args.command == 'exec':
         return exec_file(args.file, args.args, time_mode=args.time)

@@ -1,6 +1,14 @@
-"""`make lab`: the book in JupyterLab, live, on a working copy.
+"""`make lab` / `labkit lab`: the book in JupyterLab, live, on a working copy.
 
+    labkit lab [--root lab] [jupyterlab options...]
     python -m labkit.tools.lab [--root lab] [jupyterlab options...]
+
+In a checkout of the book the working copy is `lab/` beside `book/`; where labkit was
+installed with pip alone (`pip install "labkit[lab]"`, no book beside it) JupyterLab
+opens the current folder (or --root) as it is. Run as root (Docker, WSL, cloud VMs)
+it passes JupyterLab's --allow-root itself. JupyterLab starts with the settings in
+lab_settings/overrides.json: no "get notified about official Jupyter news?" popup, no
+update check (nothing reaches the network).
 
 JupyterLab saves (and autosaves) the notebooks it has open. So that a learner's
 checkout stays clean, the book's files are copied once into a working folder
@@ -16,12 +24,15 @@ of a keypad, a job's command line) is what a reopened notebook shows.
 import os
 import pathlib
 import shutil
+import signal
+import subprocess
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 BOOK = ROOT / "book"
 SKIP = {"_build", "_work", ".ipynb_checkpoints", "__pycache__"}
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+SETTINGS = pathlib.Path(__file__).resolve().parent / "lab_settings"
 
 
 def working_copy(book=BOOK, target=ROOT / "lab"):
@@ -53,27 +64,69 @@ def strip_live_views(model, **kwargs):
                 del data[WIDGET_VIEW]
 
 
+def is_root():
+    return hasattr(os, "geteuid") and os.geteuid() == 0
+
+
 def command(root, extra=()):
+    extra = list(extra)
+    if is_root() and "--allow-root" not in extra:
+        extra.append("--allow-root")     # JupyterLab refuses root without it
     return [sys.executable, "-m", "jupyterlab", "--ip=127.0.0.1",
             f"--notebook-dir={root}",
             "--ContentsManager.pre_save_hook=labkit.tools.lab.strip_live_views",
+            f"--LabApp.app_settings_dir={SETTINGS}",
             *extra]
+
+
+def run(cmd, env=None):
+    """Run JupyterLab as a child and wait for it (os.execv does not exist as such on
+    Windows). Ctrl+C reaches the child through the terminal as it would reach
+    `jupyter lab`; SIGTERM/SIGHUP sent to us are passed on; the child's exit code is
+    ours."""
+    child = subprocess.Popen(cmd, env=env)
+    forwarded = []
+
+    def forward(signum, frame):
+        forwarded.append(signum)
+        if child.poll() is None:
+            child.send_signal(signum)
+
+    old = {}
+    for name in ("SIGTERM", "SIGHUP"):
+        sig = getattr(signal, name, None)
+        if sig is not None:
+            try:
+                old[sig] = signal.signal(sig, forward)
+            except ValueError:       # not the main thread
+                pass
+    try:
+        while True:
+            try:
+                return child.wait()
+            except KeyboardInterrupt:
+                # the terminal sent Ctrl+C to the child too; JupyterLab asks or stops
+                continue
+    finally:
+        for sig, handler in old.items():
+            signal.signal(sig, handler)
 
 
 def main(argv=None):
     argv = list(sys.argv[1:] if argv is None else argv)
-    root = ROOT / "lab"
+    book = BOOK if (BOOK / "_toc.yml").is_file() else None
+    root = ROOT / "lab" if book else pathlib.Path.cwd()
     if argv[:1] == ["--root"]:
         root = pathlib.Path(argv[1]).resolve()
         argv = argv[2:]
-    copied = working_copy(BOOK, root)
-    if copied:
-        print(f"labkit: {len(copied)} files of the book copied to {root.name}/ "
-              "(your working copy; the book itself stays as shipped)")
-    os.environ["LABKIT_TIME"] = "live"
-    cmd = command(root, argv)
-    os.execv(cmd[0], cmd)
+    if book is not None:
+        copied = working_copy(book, root)
+        if copied:
+            print(f"labkit: {len(copied)} files of the book copied to {root.name}/ "
+                  "(your working copy; the book itself stays as shipped)")
+    env = dict(os.environ, LABKIT_TIME="live")
+    return run(command(root, argv), env=env)
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
