@@ -40,6 +40,7 @@ CPP = {
 
 _extra = {}
 _paths = {}      # (package, executable) -> the path `ros2 run` shows as argv[0]
+_overlaid = set()   # packages a sourced workspace provides: only its own executables count
 
 
 def is_cpp(package, executable):
@@ -79,9 +80,23 @@ def unregister_package(package):
         _paths.pop(key, None)
 
 
+def overlay_package(package):
+    """A sourced workspace now provides `package`: like ament's get_package_prefix, the
+    tools look only under the first prefix that has it, so the bundled (underlay)
+    executables of that package are no longer found; only what register() adds is."""
+    unregister_package(package)
+    _overlaid.add(package)
+
+
+def _builtin(package, executable):
+    if package in _overlaid:
+        return None
+    return BUILTIN.get((package, executable))
+
+
 def lookup(package, executable):
     """Return "module:function" (a `Target`) or None."""
-    target = _extra.get((package, executable)) or BUILTIN.get((package, executable))
+    target = _extra.get((package, executable)) or _builtin(package, executable)
     if target is None:
         return None
     target = Target(target)
@@ -96,7 +111,7 @@ def packages():
 
 def executables(package=None):
     """Sorted (package, executable) pairs, optionally of one package."""
-    pairs = set(BUILTIN) | set(_extra)
+    pairs = {p for p in BUILTIN if p[0] not in _overlaid} | set(_extra)
     return sorted(p for p in pairs if package is None or p[0] == package)
 
 

@@ -181,7 +181,7 @@ def _has_interfaces(prefix, name):
 def _register_executables(name, prefix, site):
     """`ros2 run <pkg> <exe>` finds what is in install/<pkg>/lib/<pkg>/ (like ros2run)."""
     from labkit import executables
-    executables.unregister_package(name)
+    executables.overlay_package(name)
     _workspace_packages.add(name)
     libexec = os.path.join(prefix, 'lib', name)
     registered = set()

@@ -23,11 +23,14 @@ def clean_env(monkeypatch):
     compat.activate()
     saved_path = list(sys.path)
     saved_exe = dict(executables._extra)
+    saved_overlaid = set(executables._overlaid)
     saved_roots = registry.share_paths()
     yield
     sys.path[:] = saved_path
     executables._extra.clear()
     executables._extra.update(saved_exe)
+    executables._overlaid.clear()
+    executables._overlaid.update(saved_overlaid)
     for root in registry.share_paths():
         if root not in saved_roots:
             registry.remove_share_path(root)
