@@ -67,11 +67,23 @@ def home():
 
 
 def expand(path):
-    """`~` and `~/x` -> the real folder (as a shell expands them); others unchanged."""
+    """`~` and `~/x` -> the real folder (as a shell expands them); inside the sandbox also
+    the /root/... that labkit prints for it (typed back, it must open the same file);
+    others unchanged."""
     path = os.fspath(path)
     if path == '~' or path.startswith('~/'):
         return oslayer.join_home(home(), path[2:])      # this OS's separators
+    if _home is not None and (path == SHOWN_HOME or path.startswith(SHOWN_HOME + '/')):
+        return oslayer.join_home(_home, path[len(SHOWN_HOME) + 1:])
     return path
+
+
+def expand_arg(arg):
+    """A command-line word naming a path as labkit printed it (/root/... in the sandbox)
+    -> the real path; any other word (names, `key:=value`, options) unchanged."""
+    if _home is None or not isinstance(arg, str):
+        return arg
+    return expand(arg) if arg == SHOWN_HOME or arg.startswith(SHOWN_HOME + '/') else arg
 
 
 def display(path):

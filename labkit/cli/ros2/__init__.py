@@ -97,9 +97,11 @@ def run_command(command, echo=None):
     out, err = _Recorder('stdout', chunks, echo), _Recorder('stderr', chunks, echo)
     streams = Streams(out, err)
     _base.set_parse_streams(streams)
+    from labkit.ament import files
     try:
         parser = build_parser(argv)
-        args = parser.parse_args(argv)
+        # a path typed back as labkit printed it (/root/... of the sandbox) opens that file
+        args = parser.parse_args([files.expand_arg(a) for a in argv])
     except ParserExit as e:
         return CompletedCommand(argv, e.status, out.getvalue(), err.getvalue(), None, chunks)
     except Exception as e:  # a noun module that cannot load: one line, as everywhere
