@@ -9,7 +9,12 @@ export TZ ?= UTC
 
 .PHONY: setup test unit nbval browser book book-exec lab bench clean
 
-setup: $(STAMP) rosref
+setup: $(STAMP) rosref wine
+
+# Windows CPython in Wine for tests/platform/test_windows_wine.py; nothing where wine is missing
+.PHONY: wine
+wine: $(STAMP)
+	$(PY) tools/wine_env.py prepare --if-wine
 
 # The real-ROS reference (Jazzy rclpy + Fast DDS wheels, cp311/cp312 only) that tests/dds
 # and benchmarks/bench_dds.py talk to. Its own venv, never inside .venv (see benchmarks/README.md).

@@ -127,6 +127,16 @@ def symlink(target, path, *, target_is_directory=None):
     return how
 
 
+def refresh(path):
+    """A link that had to be a copy shows its target again (a copy of a folder is taken
+    once; a link would show what was written there since). Nothing for a real link."""
+    target = _stand_ins.get(os.path.abspath(path))
+    if target is None or is_link(path) or not os.path.isdir(path):
+        return
+    full = target if os.path.isabs(target) else os.path.join(os.path.dirname(path), target)
+    shutil.copytree(full, path, symlinks=False, dirs_exist_ok=True)
+
+
 def link_target(path):
     """What `readlink path` prints: the target of a symbolic link, or of a link this
     process had to make as a junction or a copy; None for anything else."""
@@ -307,6 +317,25 @@ def terminal_keys(press, done, *, pass_ctrl_c=False, name='teleop-tty'):
 KILL_SIGNAL = getattr(signal, 'SIGKILL', signal.SIGTERM)
 
 
+# what glibc's strsignal() says for Linux's signal numbers (the simulated processes' exit
+# codes are Humble's: -6 is SIGABRT on Linux, while Windows numbers its signals otherwise)
+_LINUX_SIGNALS = {1: 'Hangup', 2: 'Interrupt', 3: 'Quit', 4: 'Illegal instruction',
+                  5: 'Trace/breakpoint trap', 6: 'Aborted', 7: 'Bus error',
+                  8: 'Floating point exception', 9: 'Killed', 10: 'User defined signal 1',
+                  11: 'Segmentation fault', 12: 'User defined signal 2', 13: 'Broken pipe',
+                  14: 'Alarm clock', 15: 'Terminated'}
+
+
+def linux_signal_description(signum):
+    """strsignal() of a Linux signal number, on every OS; None for an unknown one."""
+    if LINUX:
+        try:
+            return signal.strsignal(signum)
+        except ValueError:
+            return None
+    return _LINUX_SIGNALS.get(signum)
+
+
 def exec_replace(argv, env=None):
     """Become `argv` (os.execv on POSIX). Windows has no exec that keeps the console and
     the exit code: run it as a child, wait, and exit with its code."""
@@ -340,7 +369,7 @@ def stop_process(proc, timeout=10.0):
             proc.send_signal(getattr(signal, 'CTRL_BREAK_EVENT', signal.SIGTERM))
         else:
             proc.send_signal(signal.SIGINT)
-    except (OSError, ValueError):
+    except (OSError, ValueError, SystemError):    # Wine: CTRL_BREAK -> WinError 12
         proc.terminate()
     try:
         return proc.wait(timeout)

@@ -19,7 +19,7 @@ accepts that rpds-py). Everything else follows requirements.lock.
 Wine quirk: Python's stdout redirected to a regular file dies under Wine, so `run --cat`
 pipes the Windows program's output through `cat` (what the tests do).
 
-Without wine on PATH, `prepare --if-wine` does nothing and says so in one line.
+Without wine on PATH, `prepare --if-wine` does nothing (what `make setup` runs).
 """
 import argparse
 import hashlib
@@ -29,6 +29,7 @@ import shutil
 import subprocess
 import sys
 import tarfile
+import time
 import zipfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -45,7 +46,7 @@ PY_VERSION = '3.11.9'
 WINE_OVERRIDES = {'numpy': '2.0.2', 'rpds-py': '0.18.1', 'jsonschema': '4.23.0'}
 # What the Windows test job imports: labkit's own dependencies (pyproject.toml) and the
 # test runner with nbval and a kernel for the notebooks.
-EXTRA_TOP = ['pytest', 'nbval', 'ipykernel', 'colorama', 'mcap']
+EXTRA_TOP = ['pytest', 'nbval', 'ipykernel', 'colorama', 'mcap', 'mcap-ros2-support']
 
 
 def wine():
@@ -150,11 +151,11 @@ def _wineboot():
 
 def prepare(if_wine=False):
     if wine() is None:
-        if if_wine:
-            print('wine_env: no wine on PATH, the Windows (Wine) job is skipped')
+        if if_wine:         # make setup: nothing to do without wine (the tests say so)
             return 0
         print('wine_env: wine is not installed (Debian: apt-get install wine64)', file=sys.stderr)
         return 1
+    started = time.monotonic()
     digest = _inputs_digest()
     if os.path.exists(STAMP):
         with open(STAMP, encoding='utf-8') as f:
@@ -169,7 +170,8 @@ def prepare(if_wine=False):
     _wineboot()
     with open(STAMP, 'w', encoding='utf-8') as f:
         f.write(digest + '\n')
-    print(f'wine_env: Windows CPython {PY_VERSION} ready in .venv-win/')
+    print(f'wine_env: Windows CPython {PY_VERSION} ready in .venv-win/ '
+          f'({time.monotonic() - started:.0f} s)')
     return 0
 
 

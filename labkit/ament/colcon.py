@@ -587,6 +587,15 @@ def _new_log_dir(log_base):
 
 
 def _write_package_log(log_dir, name, res):
+    try:
+        _write_logs(log_dir, name, res)
+    finally:      # log/latest* as copies (no symlinks on this OS): show the new logs too
+        log_base = os.path.dirname(log_dir)
+        for link in ('latest_build', 'latest'):
+            oslayer.refresh(os.path.join(log_base, link))
+
+
+def _write_logs(log_dir, name, res):
     folder = os.path.join(log_dir, name)
     os.makedirs(folder, exist_ok=True)
     out = ''.join(line + '\n' for line in res.stdout)

@@ -284,7 +284,8 @@ def _shown(line, cost, virtual):
     if files._home is not None:
         line = oslayer.slashes_after(line.replace(home, files.SHOWN_HOME),
                                      (files.SHOWN_HOME,))
-    if line.startswith('configfile: ') and line.endswith(os.devnull.lstrip('/')):
+    # -c os.devnull: `../../dev/null` on Linux, `\\\\.\\nul\\` on Windows
+    if line.startswith('configfile: ') and line.rstrip('\\/').endswith(os.devnull.lstrip('/')):
         return None
     if virtual:
         if line.startswith('platform ') and ' -- Python ' in line:   # win32, darwin too

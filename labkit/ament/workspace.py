@@ -7,6 +7,8 @@ import os
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 
+from labkit import oslayer
+
 IGNORE_MARKERS = ('COLCON_IGNORE', 'AMENT_IGNORE', 'CATKIN_IGNORE')
 BUILD_DEPS = ('buildtool_depend', 'build_depend', 'depend', 'build_export_depend')
 RUN_DEPS = ('exec_depend', 'depend', 'build_export_depend', 'buildtool_export_depend')
@@ -51,7 +53,7 @@ def check_manifest(folder):
     """catkin_pkg's complaint about a package.xml (invalid XML, failed checks), or None."""
     from labkit.ament import manifest
     path = os.path.join(folder, 'package.xml')
-    shown = os.path.relpath(path)
+    shown = oslayer.shown_path(os.path.relpath(path))      # src/pkg/package.xml on every OS
     try:
         ET.parse(path)
     except ET.ParseError as e:
@@ -90,7 +92,8 @@ def discover(base_paths, skip_dirs=(), warnings=None):
                 elif warnings is not None:
                     warnings.append(
                         'WARNING:colcon.colcon_core.package_identification:Failed to parse '
-                        "ROS package manifest in '%s': %s" % (os.path.relpath(root), problem))
+                        "ROS package manifest in '%s': %s" % (oslayer.shown_path(os.path.relpath(root)),
+                                                               problem))
                 dirs[:] = []
                 continue
             dirs[:] = [d for d in dirs if not d.startswith('.') and d != '__pycache__']

@@ -1,5 +1,6 @@
 """launch_ros.actions.Node: a ROS node (a `ros2 run` executable) started by launch."""
 import os
+import posixpath
 import tempfile
 
 import yaml
@@ -23,12 +24,12 @@ def executable_path(package, executable):
                 "package '{}' not found, searching: {}".format(
                     package, index.search_paths_shown()))
         prefix = index.SHOWN_INSTALL_PREFIX
-    libexec = os.path.join(prefix, 'lib', package)
+    libexec = posixpath.join(prefix, 'lib', package)       # a printed path: '/' on every OS
     if executables.lookup(package, executable) is None:
         raise RuntimeError(
             "executable '{}' not found on the libexec directory '{}' ".format(
                 executable, libexec))
-    return os.path.join(libexec, executable)
+    return posixpath.join(libexec, executable)
 
 
 class Node(Action):

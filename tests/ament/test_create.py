@@ -59,8 +59,8 @@ def listing(root):
     found = []
     for folder, dirs, names in os.walk(root):
         rel = os.path.relpath(folder, root)
-        found += [os.path.normpath(os.path.join(rel, d)) + '/' for d in dirs]
-        found += [os.path.normpath(os.path.join(rel, n)) for n in names]
+        found += [os.path.normpath(os.path.join(rel, d)).replace(os.sep, '/') + '/' for d in dirs]
+        found += [os.path.normpath(os.path.join(rel, n)).replace(os.sep, '/') for n in names]
     return sorted(found)
 
 

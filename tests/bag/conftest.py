@@ -14,10 +14,16 @@ def bag_dir(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     # `ros2 bag info` prints local times: make them the same everywhere
     monkeypatch.setenv('TZ', 'UTC')
-    time.tzset()
+    _tzset()
     yield tmp_path
     monkeypatch.undo()  # TZ back first, then let the C library see it
-    time.tzset()
+    _tzset()
+
+
+def _tzset():
+    # POSIX only: Windows' C runtime reads TZ itself (time.tzset does not exist there)
+    if hasattr(time, 'tzset'):
+        time.tzset()
 
 
 @pytest.fixture

@@ -107,9 +107,9 @@ def test_yaml_and_csv_match_rosidl_runtime_py_for_recorded_samples(test_msgs):
     finally:
         sys.path.pop(0)
     from labkit.interfaces import convert
-    with open(os.path.join(DATA, 'convert_reference.json')) as f:
+    with open(os.path.join(DATA, 'convert_reference.json'), encoding='utf-8') as f:
         expected = json.load(f)
-    with open(os.path.join(DATA, 'rclpy_reference.json')) as f:
+    with open(os.path.join(DATA, 'rclpy_reference.json'), encoding='utf-8') as f:
         samples = json.load(f)['samples']
     wrong = []
     for key, want in expected.items():

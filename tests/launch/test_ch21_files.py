@@ -37,7 +37,7 @@ def lab(ws, monkeypatch):
         if path.startswith('launch_lab/'):
             target = share / path[len('launch_lab/'):]
             target.parent.mkdir(parents=True, exist_ok=True)
-            target.write_text(text)
+            target.write_text(text, encoding='utf-8')
     marker = prefix / 'share' / 'ament_index' / 'resource_index' / 'packages'
     marker.mkdir(parents=True)
     (marker / 'launch_lab').write_text('')
@@ -81,7 +81,7 @@ def test_the_notebook_writes_every_file():
 
 
 def test_mimic_launch_by_path(tmp_path, monkeypatch):
-    (tmp_path / 'mimic_launch.py').write_text(written_files()['mimic_launch.py'])
+    (tmp_path / 'mimic_launch.py').write_text(written_files()['mimic_launch.py'], encoding='utf-8')
     monkeypatch.chdir(tmp_path)
     job = launch('launch mimic_launch.py')
     labkit.sleep(0.5)

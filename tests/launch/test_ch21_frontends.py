@@ -21,7 +21,7 @@ def test_mimic_system_in_three_formats_is_one_graph(tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     seen = {}
     for name in ('mimic_launch.py', 'mimic.launch.xml', 'mimic.launch.yaml'):
-        (tmp_path / name).write_text(files[name])
+        (tmp_path / name).write_text(files[name], encoding='utf-8')
         job = launch(f'launch {name}')
         seen[name] = _graph(job)
         job.stop()
@@ -63,7 +63,7 @@ def test_pond_xml_spawns_and_colours_like_pond_py(lab, arguments, red):
 
 def test_ponds_xml_group_param_file_and_remaps(lab, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
-    (tmp_path / 'ponds.launch.xml').write_text(written_files()['ponds.launch.xml'])
+    (tmp_path / 'ponds.launch.xml').write_text(written_files()['ponds.launch.xml'], encoding='utf-8')
     job = launch('launch ponds.launch.xml')
     labkit.sleep(1.0)
     assert nodes() == ['/mimic', '/sim', '/turtlesim2/sim']
@@ -78,7 +78,7 @@ def test_ponds_xml_group_param_file_and_remaps(lab, tmp_path, monkeypatch):
 def test_a_misspelt_attribute_is_named_and_nothing_starts(lab, tmp_path, monkeypatch):
     monkeypatch.chdir(tmp_path)
     text = written_files()['ponds.launch.xml'].replace('name="mimic"', 'nmae="mimic"')
-    (tmp_path / 'typo.launch.xml').write_text(text)
+    (tmp_path / 'typo.launch.xml').write_text(text, encoding='utf-8')
     result = labkit.ros2('launch typo.launch.xml')
     lines = result.text().splitlines()
     assert lines[-3:] == [

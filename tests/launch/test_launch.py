@@ -1,4 +1,6 @@
 """ros2 launch: python launch files run unchanged, nodes start as labkit processes."""
+import os
+
 import labkit
 from labkit.ament import colcon, source
 
@@ -45,7 +47,8 @@ def test_launch_package_file_with_arguments_and_parameters(facer):
     out = job.output
     # virtual time: the log folder's date is the simulated clock's, the host 'labkit'
     assert out[0].startswith('[INFO] [launch]: All log files can be found below ')
-    assert out[0].endswith(f'/.ros/log/2024-01-01-00-00-00-000000-labkit-{job.pid}')
+    assert out[0].endswith(os.path.join('', '.ros', 'log',
+                                        f'2024-01-01-00-00-00-000000-labkit-{job.pid}'))
     assert out[1] == '[INFO] [launch]: Default logging verbosity is set to INFO'
     pid1 = out[2].split('[')[-1].rstrip(']')
     assert out[2] == f'[INFO] [capture_image-1]: process started with pid [{pid1}]'
@@ -228,7 +231,7 @@ def test_bundled_prefixes_and_shown_paths(ws):
     from labkit.ament import index
     from ament_index_python.packages import get_package_share_directory
     share = get_package_share_directory('turtlesim')
-    assert share.endswith('/labkit/ament/prefix/share/turtlesim')
+    assert share.replace(os.sep, '/').endswith('/labkit/ament/prefix/share/turtlesim')
     assert index.shown(share) == '/opt/ros/humble/share/turtlesim'
     assert index.shown(get_package_share_directory('std_msgs')) == \
         '/opt/ros/humble/share/std_msgs'

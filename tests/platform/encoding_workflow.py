@@ -26,6 +26,8 @@ from labkit.cli import magics  # noqa: E402
 STEPS = []
 LABKIT = os.path.dirname(os.path.abspath(labkit.__file__)) + os.sep
 STDLIB = os.path.normcase(sysconfig.get_paths()['stdlib']) + os.sep
+# third-party packages (on Windows site-packages is inside the standard library's folder)
+SITE = tuple({os.path.normcase(sysconfig.get_paths()[k]) + os.sep for k in ('purelib', 'platlib')})
 THIRD_PARTY = []
 
 
@@ -34,7 +36,8 @@ def _blame(filename):
     stack = traceback.extract_stack()[:-2]
     for frame in reversed(stack):
         path = os.path.normcase(os.path.abspath(frame.filename))
-        if frame.filename.startswith('<') or path.startswith(STDLIB):
+        if frame.filename.startswith('<') or (path.startswith(STDLIB)
+                                              and not path.startswith(SITE)):
             continue
         return frame
     return None

@@ -60,7 +60,7 @@ ROS2RUN_MSG_PREFIX = '[ros2run]:'
 
 def exit_description(returncode):
     """A signal's name for a process killed by it (-N), else the exit code."""
-    import signal
-    if returncode < 0 and -returncode in signal.valid_signals():
-        return signal.strsignal(-returncode)
+    from labkit import oslayer       # Humble's (Linux's) signal numbers and names on every OS
+    if returncode < 0 and oslayer.linux_signal_description(-returncode):
+        return oslayer.linux_signal_description(-returncode)
     return 'Process exited with failure %d' % returncode
