@@ -289,6 +289,20 @@ def turtle_pose(turtle: str = "turtle1"):
             "linear_velocity": p.linear_velocity, "angular_velocity": p.angular_velocity}
 
 
+def crashed() -> list[tuple[str, int, str]]:
+    """Background processes that ended with an error and were not reaped yet (a shell
+    keeps a dead child's status until the next command): (name, returncode, its last
+    error line), oldest first. What a check names when a server stopped answering."""
+    from labkit import process
+
+    out = []
+    for proc in process.processes():
+        if proc.returncode not in (None, 0, -2):
+            lines = [line.strip() for line in proc.output if line.strip()]
+            out.append((proc.name, proc.returncode, lines[-1] if lines else ""))
+    return out
+
+
 def _node_names() -> set[str]:
     node = _graph_node()
     out = set()
