@@ -198,15 +198,7 @@ def _rclcpp_type_name(rclpy_name):
 def _die_like_python(exc):
     """An uncaught Python exception: the traceback a real install prints, with the
     program's own frames but none of labkit's (whose files a real install does not have)."""
-    import os
     import sys
-    import traceback
-    here = os.path.dirname(os.path.abspath(__file__))
-    frames = [f for f in traceback.extract_tb(exc.__traceback__)
-              if not os.path.abspath(f.filename).startswith(here + os.sep)]
-    lines = traceback.format_exception_only(type(exc), exc)
-    if frames:
-        lines = (["Traceback (most recent call last):\n"]
-                 + traceback.format_list(frames) + lines)
-    sys.stderr.write("".join(lines))
+    from labkit.process import python_traceback
+    sys.stderr.write(python_traceback(exc))
     return 1

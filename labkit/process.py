@@ -4,6 +4,8 @@ as if it were its own OS process. The notebook/script itself is process `main`.
 """
 import io
 import itertools
+import linecache
+import os
 import sys
 import threading
 import time
@@ -47,6 +49,9 @@ class Process:
         self._partial = {"stdout": "", "stderr": ""}
         self._echo_partial = {"stdout": "", "stderr": ""}   # a line not yet ended
         self._sigint = False            # a stop request, delivered like SIGINT
+        self.cpp = False                # a C++ program in real ROS (rclcpp handles SIGINT)
+        self.closing = False            # labkit.reset(): its terminal is closed, shows nothing
+        self.exit_hooks = []            # callable(returncode), run in it as it ends (ros2 run)
 
     def __repr__(self):
         state = "running" if self.running else f"exited {self.returncode}"
@@ -121,6 +126,8 @@ class Process:
         # next wait point) and every context shut down
         if self.running:
             self._sigint = True
+            if self.cpp and not self.closing:
+                self._rclcpp_signal_line()
         for ctx in list(self.rclpy.contexts):
             try:
                 ctx.try_shutdown()
@@ -140,6 +147,25 @@ class Process:
             if self in _processes:
                 _processes.remove(self)
         self._flush_partial()
+
+    def _rclcpp_signal_line(self):
+        """rclcpp's signal handler logs the signal it got (Humble: rclcpp/signal_handler.cpp),
+        in the process's own output, with its logging settings."""
+        thread = threading.current_thread()
+        saved = getattr(thread, "_labkit_process", None)
+        thread._labkit_process = self
+        try:
+            from labkit.rclpy.impl import rcutils_logger
+            from labkit.rclpy.impl.logging_severity import LoggingSeverity
+            if rcutils_logger._config().effective_level("rclcpp") <= LoggingSeverity.INFO:
+                rcutils_logger.emit(LoggingSeverity.INFO, "rclcpp", "signal_handler(signum=2)")
+        except Exception:
+            pass
+        finally:
+            if saved is None:
+                del thread._labkit_process
+            else:
+                thread._labkit_process = saved
 
     def wait(self, timeout_s=None):
         """Wait (a world wait point) until the process ends; returns its returncode."""
@@ -162,6 +188,9 @@ def _clear_rclpy_state(proc):
         except Exception:
             pass
     state.contexts.clear()
+    if proc is MAIN:
+        from labkit.rclpy.signals import uninstall_signal_handlers
+        uninstall_signal_handlers()     # what rclpy.init installed (reset: a fresh start)
     state.default_context = None
     state.global_executor = None
     state.logging = None
@@ -349,7 +378,9 @@ def _resolve(argv):
     if target is None:
         raise LookupError("No executable found")
     exe_path = executables.path_of(package, executable)
-    return executables.resolve(target), [exe_path] + list(argv[2:])
+    program = executables.resolve(target)
+    program._labkit_cpp = bool(getattr(target, "cpp", False))
+    return program, [exe_path] + list(argv[2:])
 
 
 def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
@@ -364,6 +395,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     install_output_proxy()
     _install_argv_proxy()
     proc = Process(name, argv=args)
+    proc.cpp = bool(getattr(main, "_labkit_cpp", False))
     proc.parent = current()             # who started it (a launch starts its nodes)
     proc.echo = echo
     proc.sink = sink
@@ -379,12 +411,21 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
             code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
             if exc.code is not None and not isinstance(exc.code, int):
                 sys.stderr.write(f"{exc.code}\n")
-        except KeyboardInterrupt:
-            code = -2
-        except BaseException:
-            sys.stderr.write(traceback.format_exc())
+        except KeyboardInterrupt as exc:
+            # SIGINT: rclcpp ends a C++ program's spin and it returns normally; a Python
+            # program that does not catch it dies of it, and Python prints the traceback
+            code = 0 if proc.cpp else -2
+            if not proc.cpp and not proc.closing and _has_user_frames(exc):
+                sys.stderr.write(python_traceback(exc))
+        except BaseException as exc:
+            sys.stderr.write(python_traceback(exc))
             code = 1
         finally:
+            for hook in list(proc.exit_hooks):
+                try:
+                    hook(code)
+                except Exception:
+                    pass
             proc.returncode = code
             # a real process that exits leaves nothing behind in the graph
             _clear_rclpy_state(proc)
@@ -537,6 +578,7 @@ live_view = None
 def reset_all():
     """Stop every process, shut every context down, clear the graph."""
     for proc in reversed(processes()):
+        proc.closing = True             # its window is closed: nothing more shows
         proc.stop()
     MAIN.stop()
     for hook in list(reset_hooks):
@@ -553,3 +595,94 @@ def reset_all():
     except world.Deadlock:
         pass
     world.restart_clock()
+
+
+# ------------------------------------------------------------ how a Python program dies
+# Humble runs Python 3.10 (no ^^^ markers under a frame) and its rclpy is installed here:
+HUMBLE_RCLPY = "/opt/ros/humble/local/lib/python3.10/dist-packages/rclpy/"
+_LABKIT_DIR = os.path.dirname(os.path.abspath(__file__)) + os.sep
+_WAIT = [("executors.py", 728, "_spin_once_impl",
+          "handler, entity, node = self.wait_for_ready_callbacks(timeout_sec=timeout_sec)"),
+         ("executors.py", 711, "wait_for_ready_callbacks", "return next(self._cb_iter)"),
+         ("executors.py", 608, "_wait_for_ready_callbacks", "wait_set.wait(timeout_nsec)")]
+_SPIN_ONCE = [("executors.py", 739, "spin_once", "self._spin_once_impl(timeout_sec)")] + _WAIT
+_UNTIL = [("executors.py", 303, "spin_until_future_complete",
+           "self.spin_once_until_future_complete(future, timeout_sec)"),
+          ("executors.py", 746, "spin_once_until_future_complete",
+           "self._spin_once_impl(timeout_sec)")] + _WAIT
+# where a program's code entered rclpy -> the frames Humble's rclpy 3.3.15 shows below it
+# when SIGINT arrives while it waits (SingleThreadedExecutor)
+_HUMBLE_FRAMES = {
+    ("__init__.py", "spin"): [("__init__.py", 226, "spin", "executor.spin_once()")]
+    + _SPIN_ONCE,
+    ("__init__.py", "spin_once"): [("__init__.py", 206, "spin_once",
+                                    "executor.spin_once(timeout_sec=timeout_sec)")] + _SPIN_ONCE,
+    ("__init__.py", "spin_until_future_complete"): [
+        ("__init__.py", 253, "spin_until_future_complete",
+         "executor.spin_until_future_complete(future, timeout_sec)")] + _UNTIL,
+    ("executors.py", "spin"): [("executors.py", 294, "spin", "self.spin_once()")] + _SPIN_ONCE,
+    ("executors.py", "spin_once"): _SPIN_ONCE,
+    ("executors.py", "spin_until_future_complete"): _UNTIL,
+}
+
+
+def _is_labkit(filename):
+    return os.path.abspath(filename).startswith(_LABKIT_DIR)
+
+
+def _has_user_frames(exc):
+    tb = exc.__traceback__
+    while tb is not None:
+        if not _is_labkit(tb.tb_frame.f_code.co_filename):
+            return True
+        tb = tb.tb_next
+    return False
+
+
+def _frame_text(filename, lineno, name, line):
+    text = f'  File "{filename}", line {lineno}, in {name}\n'
+    return text + (f"    {line.strip()}\n" if line and line.strip() else "")
+
+
+def _exception_line(exc):
+    """The last line(s) as the interpreter prints them (with 'Did you mean ...?', which
+    Python 3.10 and 3.11 add only there, not in the traceback module)."""
+    buf = io.StringIO()
+    saved_tb, saved_err = exc.__traceback__, sys.stderr
+    exc.__traceback__, sys.stderr = None, buf
+    try:
+        sys.__excepthook__(type(exc), exc, None)
+    except Exception:
+        buf.write("".join(traceback.format_exception_only(type(exc), exc)))
+    finally:
+        exc.__traceback__, sys.stderr = saved_tb, saved_err
+    lines = buf.getvalue().splitlines(keepends=True)
+    if lines and lines[0].startswith("Traceback"):
+        lines = lines[1:]
+    return "".join(lines)
+
+
+def python_traceback(exc):
+    """What a real ROS 2 Humble install prints when a Python program dies of `exc`: the
+    program's own frames, none of labkit's (a real install has no such files); where it
+    was waiting inside rclpy, the frames Humble's rclpy shows there."""
+    frames = []
+    tb = exc.__traceback__
+    entered = None
+    while tb is not None:
+        code = tb.tb_frame.f_code
+        if not _is_labkit(code.co_filename):
+            frames.append(_frame_text(code.co_filename, tb.tb_lineno, code.co_name,
+                                      linecache.getline(code.co_filename, tb.tb_lineno)))
+            entered = None
+        elif entered is None:
+            rel = os.path.relpath(code.co_filename, _LABKIT_DIR)
+            entered = (os.path.basename(rel), code.co_name) if rel.startswith("rclpy") \
+                else ("", "")
+            for file, lineno, name, line in _HUMBLE_FRAMES.get(entered, ()) \
+                    if isinstance(exc, KeyboardInterrupt) else ():
+                frames.append(_frame_text(HUMBLE_RCLPY + file, lineno, name, line))
+        tb = tb.tb_next
+    head = "Traceback (most recent call last):\n" if frames else ""
+    return head + "".join(frames) + _exception_line(exc)
+

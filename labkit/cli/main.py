@@ -8,11 +8,12 @@ import argparse
 import os
 import runpy
 import sys
-import traceback
 
 
 def main(argv=None):
     argv = list(sys.argv[1:] if argv is None else argv)
+    from labkit.viz import window    # a simulator started from a terminal opens its window
+    window.ENABLED = True
     parser = argparse.ArgumentParser(
         prog='labkit', description='Run ROS 2 Python programs and ros2 verbs on labkit.')
     commands = parser.add_subparsers(dest='command', metavar='{exec,ros2,lab}')
@@ -124,7 +125,8 @@ def _print_user_traceback(path):
     target = os.path.abspath(path)
     while tb is not None and os.path.abspath(tb.tb_frame.f_code.co_filename) != target:
         tb = tb.tb_next
-    traceback.print_exception(etype, value, tb, file=sys.stderr)
+    from labkit.process import python_traceback   # as Humble's python3.10 prints it
+    sys.stderr.write(python_traceback(value.with_traceback(tb)))
 
 
 def _stop_everything():

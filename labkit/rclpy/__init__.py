@@ -29,6 +29,9 @@ def init(*, args=None, context=None, domain_id=None, signal_handler_options=None
         context = get_default_context()
         _state().reset_by_labkit = False
     context.init(args, domain_id=domain_id)
+    # Humble: signal handlers for SIGINT and SIGTERM unless told otherwise (rclpy.signals)
+    install_signal_handlers(SignalHandlerOptions.ALL if signal_handler_options is None
+                            else signal_handler_options)
 
 
 from labkit import process as _process  # noqa: E402
@@ -56,6 +59,8 @@ def get_global_executor():
 def shutdown(*, context=None, uninstall_handlers=None):
     """Shutdown a previously initialized context (and the global executor)."""
     _shutdown(context=context)
+    if uninstall_handlers or (uninstall_handlers is None and context is None):
+        uninstall_signal_handlers()
 
 
 def create_node(node_name, *, context=None, cli_args=None, namespace=None,

@@ -47,6 +47,9 @@ def start_run_job(argv, args):
         [args.package_name, args.executable_name, *extra],
         f'{args.package_name}/{args.executable_name}', sink=sink), new=new)
     code = getattr(result, 'returncode', 0)
+    process = getattr(result, 'process', None)
+    if process is not None and process.running and not process.exit_hooks:
+        process.exit_hooks.append(_say_how_it_ended)   # stopped later (Ctrl-C), or ended
     if isinstance(result, CompletedCommand) and code:
         # the program ended at once: ros2 run says how, as ros2run's run_executable does
         line = f'{ROS2RUN_MSG_PREFIX} {exit_description(code)}\n'
@@ -56,6 +59,13 @@ def start_run_job(argv, args):
 
 
 ROS2RUN_MSG_PREFIX = '[ros2run]:'
+
+
+def _say_how_it_ended(returncode):
+    """ros2run's run_executable, after its child ended (in the job's own output)."""
+    from labkit import process
+    if returncode and not process.current().closing:
+        print(f'{ROS2RUN_MSG_PREFIX} {exit_description(returncode)}', flush=True)
 
 
 def exit_description(returncode):
