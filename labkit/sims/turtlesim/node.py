@@ -315,10 +315,22 @@ def _show_window(node):
     TurtleCanvas(node)._ipython_display_()
 
 
+def _terminal_window(node):
+    """Started from a terminal (labkit ros2 run, live time): the window in a browser
+    (labkit/viz/window.py); None elsewhere."""
+    from labkit.viz import window
+    if not window.ENABLED:
+        return None
+    from labkit.viz.canvas import render
+    return window.open_window("TurtleSim", lambda: render(node.world),
+                              lambda: node.world.version, node.get_logger().info)
+
+
 def main(args=None):
     rclpy.init(args=args)
     node = TurtleSim()
     _show_window(node)
+    browser_window = _terminal_window(node)
     try:
         rclpy.spin(node)
     except KeyboardInterrupt:
@@ -327,5 +339,7 @@ def main(args=None):
         if type(exc).__name__ != "ExternalShutdownException":
             raise
     finally:
+        if browser_window is not None:
+            browser_window.close()
         node.destroy_node()
         rclpy.try_shutdown()

@@ -57,8 +57,25 @@ def gazebo_main(args=None):
         print(f"[Msg] World [{world.name}] initialized with "
               f"[1ms] physics profile.", flush=True)
     sim = Simulation(world, running=run)
-    sim.run()
+    # started from a terminal (live time) without -s: the GUI's place is a browser window
+    window = None if "-s" in argv else _terminal_window(sim)
+    try:
+        sim.run()
+    finally:
+        if window is not None:
+            window.close()
     return 0
+
+
+def _terminal_window(sim):
+    from labkit.viz import window
+    if not window.ENABLED:
+        return None
+    from . import render
+    return window.open_window(
+        "Gazebo", lambda: render.image(sim),
+        lambda: (sim.paused, tuple(tuple(v.pose) for v in sim.vehicles)),
+        lambda text: print(f"[Msg] {text}", flush=True))
 
 
 def topic_command(argv, out=None):
