@@ -3,7 +3,7 @@ from enum import IntEnum
 import threading
 
 from labkit.graph import world
-from labkit.rclpy.clock_type import ClockType
+from labkit.rclpy._clock_type import ClockType
 from labkit.rclpy.duration import Duration
 from labkit.rclpy.time import Time
 

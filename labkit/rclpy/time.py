@@ -1,4 +1,4 @@
-from labkit.rclpy.clock_type import ClockType
+from labkit.rclpy._clock_type import ClockType
 from labkit.rclpy.duration import Duration
 from labkit.rclpy._msgs import msg_class
 

@@ -2,7 +2,7 @@
 import threading
 
 from labkit.graph import world
-from labkit.rclpy.clock_type import ClockType
+from labkit.rclpy._clock_type import ClockType
 
 
 class Timer:

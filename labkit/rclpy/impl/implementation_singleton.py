@@ -2,7 +2,7 @@
 outside rclpy sometimes reaches for (exception classes, the ClockType enum)."""
 import types
 
-from labkit.rclpy.clock_type import ClockType
+from labkit.rclpy._clock_type import ClockType
 from labkit.rclpy.exceptions import InvalidHandle, RCLError, UnknownROSArgsError
 
 rclpy_implementation = types.SimpleNamespace(
