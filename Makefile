@@ -1,70 +1,58 @@
-# The two commands a fresh machine needs: `make book` and `make test`.
-# Both create .venv and install the pinned dependencies first (`make setup`).
+# The two commands a fresh machine needs: `make book` and `make test` (and `make lab`).
+# Every job is tools/make.py, the same code that Windows runs as `py tools\make.py JOB`:
+# it creates .venv, installs what that job needs from requirements.lock, then runs it.
+PYTHON  ?= python3
 PY      := .venv/bin/python
-PIP     := .venv/bin/pip
-STAMP   := .venv/.installed
 export LABKIT_TIME ?= virtual
 # Dates printed by tools (ros2 bag info, default bag names) must not depend on the machine.
 export TZ ?= UTC
 
-.PHONY: setup test unit nbval browser book book-exec lab bench clean
+.PHONY: setup venv test unit nbval browser book book-exec lab bench clean
 
-setup: $(STAMP) rosref wine
+# Everything the suite needs: .venv (every pin), .venv-rosref where real rclpy's wheels exist
+setup: venv wine
+
+venv:
+	$(PYTHON) tools/make.py setup
 
 # Windows CPython in Wine for tests/platform/test_windows_wine.py; nothing where wine is missing
 .PHONY: wine
-wine: $(STAMP)
+wine: venv
 	$(PY) tools/wine_env.py prepare --if-wine
 
-# The real-ROS reference (Jazzy rclpy + Fast DDS wheels, cp311/cp312 only) that tests/dds
-# and benchmarks/bench_dds.py talk to. Its own venv, never inside .venv (see benchmarks/README.md).
-ROSREF       := .venv-rosref
-ROSREF_STAMP := $(ROSREF)/.installed
-ROSREF_PY    ?= $(shell command -v python3.11 || command -v python3.12 || echo python3)
-
+# The real-ROS reference (Jazzy rclpy + Fast DDS wheels, Linux x86_64, cp311/cp312 only)
+# that tests/dds and benchmarks/bench_dds.py talk to; part of `setup` where it can exist.
 .PHONY: rosref
-rosref: $(ROSREF_STAMP)
-
-$(ROSREF_STAMP): requirements-rosref.lock
-	test -x $(ROSREF)/bin/python || $(ROSREF_PY) -m venv $(ROSREF)
-	$(ROSREF)/bin/pip install -q --upgrade pip
-	$(ROSREF)/bin/pip install -q -r requirements-rosref.lock
-	touch $(ROSREF_STAMP)
-
-$(STAMP): requirements.lock pyproject.toml
-	test -x $(PY) || python3 -m venv .venv
-	$(PIP) install -q --upgrade pip
-	$(PIP) install -q -r requirements.lock
-	$(PIP) install -q --no-deps -e .
-	touch $(STAMP)
+rosref: venv
 
 # Whole suite: labkit unit tests + conformance scripts + nbval over every notebook.
 test: setup
-	$(PY) -m pytest -q tests book
+	$(PYTHON) tools/make.py test
 
 unit: setup
-	$(PY) -m pytest -q tests
+	$(PYTHON) tools/make.py unit
 
 nbval: setup
-	$(PY) -m pytest -q book
+	$(PYTHON) tools/make.py nbval
 
-# Offline HTML book: npm ci (only when node_modules is missing or stale),
-# vendor RequireJS/ipywidgets/MathJax into book/_static/vendor, then
-# jupyter-book build from the stored outputs (see tools/book_build.py).
-book: setup
-	$(PY) tools/book_build.py
+# Offline HTML book: only the `book` set-up (no test tools, no real rclpy); npm ci (only
+# when node_modules is missing or stale), vendor RequireJS/ipywidgets/MathJax into
+# book/_static/vendor, then jupyter-book build from the stored outputs (tools/book_build.py).
+book:
+	$(PYTHON) tools/make.py book
 
 # Re-execute every notebook in place (virtual time: same outputs every run).
 book-exec: setup
-	$(PY) -m labkit.tools.execute_notebooks book
+	$(PYTHON) tools/make.py book-exec
 
 # JupyterLab, live time, on a working copy of the book in lab/ (git ignores it):
-# autosave never touches the shipped notebooks (see labkit/tools/lab.py).
-lab: setup
-	$(PY) -m labkit.tools.lab
+# autosave never touches the shipped notebooks (see labkit/tools/lab.py). Only the
+# learner's set-up (`labkit[lab]`); `labkit lab` is the same command once installed.
+lab:
+	$(PYTHON) tools/make.py lab
 
 bench: setup
-	for f in benchmarks/*.py; do echo "== $$f"; $(PY) $$f || exit 1; done
+	$(PYTHON) tools/make.py bench
 
 clean:
 	rm -rf book/_build .pytest_cache

@@ -176,7 +176,7 @@ def _mask(value, ns):
 def twins(tmp_path_factory):
     """Both twins up; (the reader's findings, labkit's `ros2 node info /real/twin`)."""
     if not ROSREF.exists():
-        pytest.skip("no real-ROS reference venv (make rosref)")
+        pytest.skip("no real-ROS reference venv .venv-rosref (real rclpy wheels: Linux x86_64, CPython 3.11/3.12 only; make setup builds it there)")
     tmp_path = tmp_path_factory.mktemp("twins")
     domain = next(_domains) % 200 + 20
     share = tmp_path / "share" / "test_msgs" / "action"

@@ -15,7 +15,8 @@ import pytest
 REPO = Path(__file__).resolve().parents[2]
 ROSREF = Path(os.environ.get("ROSREF_PYTHON", REPO / ".venv-rosref" / "bin" / "python"))
 needs_rosref = pytest.mark.skipif(not ROSREF.exists(), reason="no real-ROS reference venv "
-                                  "(make rosref)")
+                                  ".venv-rosref (real rclpy wheels: Linux x86_64, CPython "
+                                  "3.11/3.12 only; make setup builds it there)")
 _domains = itertools.count(random.Random(os.getpid()).randrange(120, 200))
 
 

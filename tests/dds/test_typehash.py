@@ -22,7 +22,7 @@ def _real_hashes():
             yield entry["type_name"], entry["hash_string"]
 
 
-@pytest.mark.skipif(not SHARE.is_dir(), reason="no real-ROS reference venv (make rosref)")
+@pytest.mark.skipif(not SHARE.is_dir(), reason="no real-ROS reference venv .venv-rosref (real rclpy wheels: Linux x86_64, CPython 3.11/3.12 only; make setup builds it there)")
 def test_every_message_labkit_knows_hashes_as_the_real_packages_say():
     compared, differ = 0, set()
     for name, real_hash in _real_hashes():

@@ -83,8 +83,12 @@ def dists():
     return json.loads(lock.DISTS.read_text(encoding="utf-8"))
 
 
+def _hub_pins():
+    return lock.read_lock(lock.HUB_LOCK) if lock.HUB_LOCK.exists() else []
+
+
 def test_dists_cover_every_pin_and_name_no_host(dists):
-    pins = {f"{n}=={v}" for n, v, _ in lock.read_lock()}
+    pins = {f"{n}=={v}" for n, v, _ in lock.read_lock() + _hub_pins()}
     assert pins == set(dists), "re-run python tools/lock.py dists after a re-lock"
     text = lock.DISTS.read_text(encoding="utf-8")
     assert not re.search(r"https?:|//|\.org\b|\.io\b", text)
@@ -123,3 +127,15 @@ def test_ci_linux_keeps_the_versions_the_outputs_were_made_with():
     assert pins["numpy"] == "2.4.6" and pins["opencv-python-headless"] == "4.14.0.94"
     assert pins["matplotlib"] == "3.11.2" and pins["scipy"] == "1.17.1"
     assert pins["pillow"] == "13.0.0" and pins["pygraphviz"] == "2.0.4"
+
+
+@pytest.mark.skipif(not lock.HUB_LOCK.exists(), reason="no requirements-hub.lock")
+@pytest.mark.parametrize("py", ["3.11.2", "3.11.9", "3.12.0"])
+def test_hub_lock_installs_on_linux(dists, py):
+    """requirements-hub.lock (JupyterHub/grading tests, Linux only) installs beside the
+    lock on Linux x86_64."""
+    env = _env("linux-x86_64", py)
+    supported = _supported(py, TARGETS["linux-x86_64"][1])
+    missing = [f"{n}=={v}" for n, v, m in _hub_pins() if not m or Marker(m).evaluate(env)
+               if not installable(dists.get(f"{n}=={v}", []), n, py, supported)]
+    assert not missing, f"linux-x86_64 Python {py}: no installable file for {missing}"
