@@ -52,6 +52,7 @@ class Process:
         self.cpp = False                # a C++ program in real ROS (rclcpp handles SIGINT)
         self.closing = False            # labkit.reset(): its terminal is closed, shows nothing
         self.exit_hooks = []            # callable(returncode), run in it as it ends (ros2 run)
+        self.aborted = None             # abort(): the status it dies with (-6, SIGABRT)
 
     def __repr__(self):
         state = "running" if self.running else f"exited {self.returncode}"
@@ -63,6 +64,8 @@ class Process:
 
     # -- output --------------------------------------------------------------
     def _write(self, stream_name, text):
+        if self.aborted is not None:
+            return                      # it is dead: nothing it would still print shows
         buf = self._partial[stream_name] + text
         *lines, rest = buf.split("\n")
         self.output.extend(lines)
@@ -172,6 +175,24 @@ class Process:
         if self.thread is not None:
             world.wait(lambda: not self.running, timeout_s)
         return self.returncode
+
+
+class Aborted(BaseException):
+    """The process called std::abort() (an uncaught C++ exception): it ends at once."""
+
+
+def abort_current(text, code=-6):
+    """What an uncaught C++ exception does to a real process: libstdc++'s terminate lines
+    (`text`) on stderr, then SIGABRT: the process ends with `code` (a shell shows 134),
+    nothing else it would print shows, no destructor runs. Called from any of its threads;
+    the caller then ends (raise Aborted, or return from its thread)."""
+    proc = current()
+    sys.stderr.write(text)
+    if proc is MAIN:
+        raise Aborted(text.rstrip("\n"))
+    proc.aborted = code
+    proc._sigint = True                 # its main thread leaves its wait point now
+    world.notify()
 
 
 def _clear_rclpy_state(proc):
@@ -411,7 +432,11 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
             code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
             if exc.code is not None and not isinstance(exc.code, int):
                 sys.stderr.write(f"{exc.code}\n")
+        except Aborted:
+            code = proc.aborted
         except KeyboardInterrupt as exc:
+            if proc.aborted is not None:
+                raise Aborted from None
             # SIGINT: rclcpp ends a C++ program's spin and it returns normally; a Python
             # program that does not catch it dies of it, and Python prints the traceback
             code = 0 if proc.cpp else -2
@@ -421,6 +446,8 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
             sys.stderr.write(python_traceback(exc))
             code = 1
         finally:
+            if proc.aborted is not None:
+                code = proc.aborted     # std::abort(): no cleanup of its own counts
             for hook in list(proc.exit_hooks):
                 try:
                     hook(code)
@@ -630,13 +657,26 @@ def _is_labkit(filename):
     return os.path.abspath(filename).startswith(_LABKIT_DIR)
 
 
+def _is_cell(filename):
+    """Code typed into a notebook cell (ipykernel compiles it to a temporary file)."""
+    return filename.startswith("<") or \
+        os.path.basename(os.path.dirname(filename)).startswith("ipykernel_")
+
+
 def _has_user_frames(exc):
+    """A program of files of its own (a package's node, a script) was running. A `main`
+    typed into a notebook cell and started as a process has no file a terminal could
+    name: its interrupt stays silent (before, and in stored outputs, the same each run)."""
     tb = exc.__traceback__
+    found = False
     while tb is not None:
-        if not _is_labkit(tb.tb_frame.f_code.co_filename):
-            return True
+        filename = tb.tb_frame.f_code.co_filename
+        if _is_cell(filename):
+            return False
+        if not _is_labkit(filename):
+            found = True
         tb = tb.tb_next
-    return False
+    return found
 
 
 def _frame_text(filename, lineno, name, line):

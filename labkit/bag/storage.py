@@ -49,6 +49,20 @@ class BagError(RuntimeError):
     """rosbag2's std::runtime_error texts."""
 
 
+class StorageWriteError(Exception):
+    """The storage refused a write (a full disk): the C++ exception rosbag2 lets escape."""
+
+    def __init__(self, cpp_class, what):
+        super().__init__(what)
+        self.cpp_class = cpp_class
+        self.what = what
+
+
+def _no_space(error):
+    import errno
+    return isinstance(error, OSError) and error.errno in (errno.ENOSPC, errno.EDQUOT)
+
+
 # --------------------------------------------------------------------------- writing
 
 class _SqliteFile:
@@ -101,10 +115,18 @@ class _SqliteFile:
     def commit(self):
         rows, self._rows = self._rows, []
         if rows:
-            self.conn.execute('BEGIN')
-            self.conn.executemany(
-                'INSERT INTO messages (timestamp, topic_id, data) VALUES (?, ?, ?)', rows)
-            self.conn.execute('COMMIT')
+            try:
+                self.conn.execute('BEGIN')
+                self.conn.executemany(
+                    'INSERT INTO messages (timestamp, topic_id, data) VALUES (?, ?, ?)', rows)
+                self.conn.execute('COMMIT')
+            except sqlite3.Error as e:
+                try:
+                    self.conn.execute('ROLLBACK')   # the batches before stay whole
+                except sqlite3.Error:
+                    pass
+                raise StorageWriteError('rosbag2_storage_plugins::SqliteException',
+                                        _sqlite_what(e)) from None
         self._last_commit = time.monotonic()
 
     def size(self):
@@ -128,34 +150,48 @@ class _McapFile:
         from labkit.bag.mcap_file import McapWriter
         self.path = path
         self.writer = McapWriter(path, os.environ.get('ROS_DISTRO', 'humble'))
+        self.full = False
+
 
     def create_topic(self, t):
         return self.writer.add_channel(t.name, t.type, t.serialization_format,
                                        t.offered_qos_profiles)
 
-    def write(self, topic_id, timestamp, data):
-        self.writer.write(topic_id, timestamp, bytes(data))
+    # Humble's mcap FileWriter does not check fwrite: on a full disk what does not fit is
+    # lost without a word and recording goes on (rosbag2_storage_mcap 0.15 / mcap 0.8)
+    def _quiet(self, call, *args):
+        if self.full:
+            return False
+        try:
+            call(*args)
+        except OSError as e:
+            if not _no_space(e):
+                raise
+            self.full = True
         return False
+
+    def write(self, topic_id, timestamp, data):
+        return self._quiet(self.writer.write, topic_id, timestamp, bytes(data))
 
     def write_many(self, rows):
         write = self.writer.write
-        for topic_id, timestamp, data in rows:
-            write(topic_id, timestamp, data)
+        self._quiet(lambda: [write(t, s, d) for t, s, d in rows])
 
     def tick(self):
-        self.writer.flush_if_old()
+        self._quiet(self.writer.flush_if_old)
 
     def commit(self):
-        self.writer.flush()
+        self._quiet(self.writer.flush)
 
     def settle(self):
-        self.writer.flush()
+        self._quiet(self.writer.flush)
 
     def size(self):
         return self.writer.size()
 
     def close(self):
-        self.writer.close()
+        self.full = False
+        self._quiet(self.writer.close)
 
 
 class _FileStats:
@@ -342,7 +378,20 @@ class BagWriter:
             self.cache.push(topic_name, data, int(timestamp))
         else:
             with self._lock:
-                self._write_now(topic_name, data, int(timestamp))
+                try:
+                    self._write_now(topic_name, data, int(timestamp))
+                except StorageWriteError as e:
+                    self._abort(e)
+
+    def _abort(self, error):
+        """A write the storage refused escapes rosbag2 (a C++ exception nobody catches):
+        std::terminate, the process aborts; the bag keeps the batches committed before
+        (metadata.yaml is not written: no destructor runs)."""
+        self.failed = True
+        from labkit.process import Aborted, abort_current
+        abort_current(f"terminate called after throwing an instance of '{error.cpp_class}'\n"
+                      f"  what():  {error.what}\n")
+        raise Aborted(error.what)
 
     def _write_now(self, topic_name, data, timestamp):
         entry = self.topics.get(topic_name)
@@ -383,13 +432,20 @@ class BagWriter:
     def _consume(self):
         """The writer thread (rosbag2_cpp's CacheConsumer): swap, write, repeat; the last
         round after close() began empties the cache."""
+        from labkit.process import Aborted
         cache = self.cache
         last = False
         while True:
             batch = cache.swap(CACHE_WAIT_SECONDS)
             with self._lock:
-                self._write_all(batch)
-                self.file.tick()       # a sqlite3 batch or an mcap chunk that waited too long
+                try:
+                    self._write_all(batch)
+                    self.file.tick()   # a sqlite3 batch or an mcap chunk that waited too long
+                except StorageWriteError as e:
+                    try:
+                        self._abort(e)
+                    except Aborted:
+                        return
             if last:
                 return
             last = cache.flushing
@@ -407,7 +463,11 @@ class BagWriter:
         # killed kernel) would leave no metadata at all, so committed batches refresh it
         # now and then; a reader that finds more rows than it describes reindexes.
         if self.storage_id == 'sqlite3':
-            write_metadata(self.uri, self.metadata())
+            try:
+                write_metadata(self.uri, self.metadata())
+            except OSError as e:       # labkit's own extra file: a full disk is the
+                if not _no_space(e):   # storage's to report
+                    raise
             self._metadata_written = time.monotonic()
 
     def metadata(self):
@@ -426,6 +486,12 @@ class BagWriter:
         if self.closed:
             return
         self.closed = True
+        if getattr(self, 'failed', False):     # aborted: nothing more reaches the disk
+            try:
+                self.file.conn.close()
+            except Exception:
+                pass
+            return
         if self.cache is not None:
             from labkit.rclpy.logging import get_logger
             get_logger('rosbag2_cpp').info(
@@ -434,8 +500,15 @@ class BagWriter:
             self._consumer.join()
             self.cache.log_dropped()
         with self._lock:
-            self.file.close()
-            write_metadata(self.uri, self.metadata())
+            try:
+                self.file.close()
+            except StorageWriteError as e:
+                self._abort(e)
+            try:
+                write_metadata(self.uri, self.metadata())
+            except OSError as e:       # yaml-cpp's ofstream does not check either
+                if not _no_space(e):
+                    raise
 
 
 def open_writer(uri, storage_id=''):
