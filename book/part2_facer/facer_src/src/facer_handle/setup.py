@@ -1,5 +1,5 @@
-import os
 from glob import glob
+import os
 
 from setuptools import setup
 

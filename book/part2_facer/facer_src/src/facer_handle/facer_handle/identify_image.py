@@ -1,4 +1,5 @@
-"""identify_image 节点：facer 机器人的处理模块。
+"""
+identify_image 节点：facer 机器人的处理模块.
 
 - 话题 frame_image 的订阅者：用 OpenCV 的 Haar 级联分类器在每一帧里找人脸；
 - 话题 face_image 的发布者：框出人脸的图像，供输出模块显示；
@@ -11,22 +12,22 @@
 """
 import os
 
+from ament_index_python.packages import get_package_share_directory, PackageNotFoundError
 import cv2
-import rclpy
-from ament_index_python.packages import PackageNotFoundError, get_package_share_directory
 from cv_bridge import CvBridge
+from facer_interfaces.srv import FaceResult
 from rcl_interfaces.msg import FloatingPointRange, IntegerRange, ParameterDescriptor
+import rclpy
+from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from sensor_msgs.msg import Image
-
-from facer_interfaces.srv import FaceResult
 
 NO_FACE = '未检测到人脸'
 CASCADE = 'haarcascade_frontalface_default.xml'
 
 
 def find_cascade():
-    """人脸模型文件的路径：先找随功能包安装的，再找 opencv-data 的，最后找 pip 版 OpenCV 的。"""
+    """人脸模型文件的路径：先找随功能包安装的，再找 opencv-data 的，最后找 pip 版 OpenCV 的."""
     folders = []
     try:
         folders.append(os.path.join(get_package_share_directory('facer_handle'), 'data'))
@@ -99,7 +100,7 @@ def main(args=None):
     node = IdentifyImage()
     try:
         rclpy.spin(node)
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, ExternalShutdownException):
         pass
     node.destroy_node()
     rclpy.try_shutdown()

@@ -1,4 +1,5 @@
-"""capture_image 节点：facer 机器人的输入模块。
+"""
+capture_image 节点：facer 机器人的输入模块.
 
 - 话题 frame_image 的发布者：按 timer_period 读取一帧图像，发布 sensor_msgs/msg/Image；
 - 动作 camera_state 的服务端：执行目标时，每 0.5 秒反馈一次摄像头状态，共 10 次。
@@ -11,16 +12,15 @@
 import time
 
 import cv2
-import rclpy
 from cv_bridge import CvBridge
+from facer_interfaces.action import CameraState
 from rcl_interfaces.msg import ParameterDescriptor, SetParametersResult
+import rclpy
 from rclpy.action import ActionServer
 from rclpy.callback_groups import ReentrantCallbackGroup
-from rclpy.executors import MultiThreadedExecutor
+from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
 from rclpy.node import Node
 from sensor_msgs.msg import Image
-
-from facer_interfaces.action import CameraState
 
 CAMERA_ON = '摄像头打开'
 CAMERA_OFF = '摄像头关闭'
@@ -57,7 +57,7 @@ class CaptureImage(Node):
             callback_group=ReentrantCallbackGroup())
 
     def open_source(self, source):
-        """打开摄像头或视频文件。"""
+        """打开摄像头或视频文件."""
         if self.cap is not None:
             self.cap.release()
         self.source = source
@@ -68,7 +68,7 @@ class CaptureImage(Node):
             self.get_logger().warn(f'无法打开图像来源 {source!r}')
 
     def read_frame(self):
-        """读取一帧；视频文件读到结尾就回到开头。"""
+        """读取一帧；视频文件读到结尾就回到开头."""
         ret, frame = self.cap.read()
         if not ret and isinstance(self.source, str):
             self.cap.set(cv2.CAP_PROP_POS_FRAMES, 0)
@@ -109,7 +109,12 @@ class CaptureImage(Node):
             feedback_msg.state = self.camera_state
             goal_handle.publish_feedback(feedback_msg)
             time.sleep(0.5)  # 只让这个线程等待，定时器回调在别的线程照常运行
-            if not rclpy.ok():  # 等待期间节点被关闭了（Ctrl-C）：到此为止
+            if not rclpy.ok():  # 等待期间节点被关闭了（Ctrl+C）：中止这个目标
+                try:
+                    goal_handle.abort()
+                except Exception:  # 上下文已关闭，状态发不出去（RCLError）：本地仍记为中止
+                    pass
+                result.finish = '节点正在关闭，动作中止'
                 return result
         goal_handle.succeed()
         result.finish = 'action completed'
@@ -123,8 +128,11 @@ def main(args=None):
     executor.add_node(node)
     try:
         executor.spin()
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, ExternalShutdownException):
         pass
+    # 等还在运行的回调（动作的执行回调）结束：它看到 rclpy.ok() 为 False 就中止目标，
+    # 然后才能销毁节点；先销毁节点的话，执行回调里的 abort() 会因句柄已销毁而出错
+    executor.shutdown()
     node.cap.release()
     node.destroy_node()
     rclpy.try_shutdown()

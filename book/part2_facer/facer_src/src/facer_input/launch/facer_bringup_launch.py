@@ -1,7 +1,12 @@
-"""一次启动 facer 的三个节点，参数来自 config/facer_params.yaml。
+"""
+一次启动 facer 的三个节点，参数来自 config/facer_params.yaml.
 
-    ros2 launch facer_input facer_bringup_launch.py
-    ros2 launch facer_input facer_bringup_launch.py source:=0     # 改用 0 号摄像头
+    ros2 launch facer_input facer_bringup_launch.py               # 视频 facer_crowd.avi
+    ros2 launch facer_input facer_bringup_launch.py source:=0     # 真机：0 号摄像头
+    ros2 launch facer_input facer_bringup_launch.py source:=/home/me/facer_sample.avi
+
+source 的默认值 facer_crowd.avi 是相对路径，相对于运行 ros2 launch 的那个目录；
+两段示例视频在本书源码的 book/part2_facer/media/ 里，先复制到那个目录，或者给出绝对路径。
 """
 import os
 

@@ -1,4 +1,4 @@
-"""启动 capture_image，并把 timer_period 参数设为 1.0 秒。"""
+"""启动 capture_image，并把 timer_period 参数设为 1.0 秒."""
 from launch import LaunchDescription
 from launch_ros.actions import Node
 

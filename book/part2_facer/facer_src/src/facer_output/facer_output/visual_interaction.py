@@ -1,4 +1,5 @@
-"""visual_interaction 节点：facer 机器人的输出模块（人机交互）。
+"""
+visual_interaction 节点：facer 机器人的输出模块（人机交互）.
 
 - 服务 face_result 的客户端：每 query_period 秒询问一次识别结果并打印；
 - 动作 camera_state 的客户端：启动后发送一个目标，打印反馈（摄像头状态）和结果；
@@ -8,14 +9,14 @@
 所有等待都交给执行器：节点从不阻塞，哪个服务端先启动都可以。
 """
 import cv2
-import rclpy
 from cv_bridge import CvBridge
-from rclpy.action import ActionClient
-from rclpy.node import Node
-from sensor_msgs.msg import Image
-
 from facer_interfaces.action import CameraState
 from facer_interfaces.srv import FaceResult
+import rclpy
+from rclpy.action import ActionClient
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from sensor_msgs.msg import Image
 
 
 class VisualInteraction(Node):
@@ -90,7 +91,7 @@ def main(args=None):
     node = VisualInteraction()
     try:
         rclpy.spin(node)
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, ExternalShutdownException):
         pass
     node.destroy_node()
     rclpy.try_shutdown()
