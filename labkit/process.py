@@ -679,7 +679,17 @@ def _has_user_frames(exc):
     return found
 
 
+# how a terminal on a Humble machine names a file (labkit.ament.index sets it: the sandbox
+# home as /root, bundled packages under /opt/ros/humble)
+shown_path = None
+
+
 def _frame_text(filename, lineno, name, line):
+    if shown_path is not None:
+        try:
+            filename = shown_path(filename)
+        except Exception:
+            pass
     text = f'  File "{filename}", line {lineno}, in {name}\n'
     return text + (f"    {line.strip()}\n" if line and line.strip() else "")
 

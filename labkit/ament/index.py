@@ -168,3 +168,8 @@ def shown(text):
         text = text.replace(home + os.sep, files.SHOWN_HOME + '/')
     # '/' in the Ubuntu paths on every OS (Windows joins with '\\')
     return oslayer.slashes_after(text, (SHOWN_INSTALL_PREFIX + '/', files.SHOWN_HOME + '/'))
+
+
+# a dying Python program's traceback names its files as a Humble machine would
+from labkit import process as _process  # noqa: E402
+_process.shown_path = shown
