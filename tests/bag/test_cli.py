@@ -105,7 +105,7 @@ def test_play_keeps_the_recorded_timing_and_rate(bag_dir):
     w.create_topic(rosbag2_py.TopicMetadata('/chatter', 'std_msgs/msg/String', 'cdr'))
     for k in range(4):
         w.write('/chatter', ifc.serialize(String(data=str(k))), 10**9 * k)
-    w.close()
+    del w                      # Humble closes a writer in its destructor
     echo = labkit.ros2('topic echo /chatter std_msgs/msg/String')
     t0 = labkit.ros2('run demo_nodes_py listener')  # noqa: F841 (a second subscriber)
     from labkit.graph import world
@@ -128,7 +128,7 @@ def test_loop_plays_until_stopped(bag_dir):
     w.create_topic(rosbag2_py.TopicMetadata('/chatter', 'std_msgs/msg/String', 'cdr'))
     w.write('/chatter', ifc.serialize(String(data='again')), 0)
     w.write('/chatter', ifc.serialize(String(data='again')), 5 * 10**8)
-    w.close()
+    del w                      # Humble closes a writer in its destructor
     echo = labkit.ros2('topic echo /chatter std_msgs/msg/String')
     play = labkit.ros2('bag play one --loop')
     labkit.sleep(2.2)

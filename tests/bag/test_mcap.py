@@ -211,7 +211,7 @@ def test_split_mcap_by_duration_like_sqlite3(bag_dir):
     writer.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
     for k in range(8):  # 0.0 .. 3.5 s
         writer.write('/c', ifc.serialize(String(data=str(k))), k * 500_000_000)
-    writer.close()
+    del writer                 # Humble closes a writer in its destructor
     m = read_metadata('split')
     assert m.relative_file_paths == ['split_0.mcap', 'split_1.mcap', 'split_2.mcap']
     assert [f.message_count for f in m.files] == [3, 3, 2]

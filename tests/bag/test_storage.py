@@ -37,7 +37,7 @@ def _write(uri, storage_id='sqlite3', n=5):
 
 
 def test_sqlite3_bag_has_humbles_layout(bag_dir):
-    _write('my_bag').close()
+    _write('my_bag')                 # dropped at once: the destructor closes it
     assert sorted(os.listdir('my_bag')) == ['metadata.yaml', 'my_bag_0.db3']
     db = sqlite3.connect('my_bag/my_bag_0.db3')
     tables = {r[0] for r in db.execute("SELECT name FROM sqlite_master WHERE type='table'")}
@@ -56,7 +56,7 @@ def test_sqlite3_bag_has_humbles_layout(bag_dir):
 
 @pytest.mark.parametrize('storage_id', ['sqlite3', 'mcap'])
 def test_rosbags_reads_what_we_write(bag_dir, storage_id):
-    _write('b', storage_id).close()
+    _write('b', storage_id)                 # dropped at once: the destructor closes it
     store = get_typestore(Stores.ROS2_HUMBLE)
     with Reader('b') as reader:
         got = [(c.topic, t, store.deserialize_cdr(d, c.msgtype)) for c, t, d in reader.messages()]
@@ -68,7 +68,7 @@ def test_rosbags_reads_what_we_write(bag_dir, storage_id):
 
 @pytest.mark.parametrize('storage_id', ['sqlite3', 'mcap'])
 def test_sequential_reader_round_trip(bag_dir, storage_id):
-    _write('b', storage_id).close()
+    _write('b', storage_id)                 # dropped at once: the destructor closes it
     reader = rosbag2_py.SequentialReader()
     reader.open(rosbag2_py.StorageOptions(uri='b', storage_id=''),
                 rosbag2_py.ConverterOptions('', ''))
@@ -108,7 +108,7 @@ def test_writer_refuses_an_existing_bag(bag_dir):
 
 
 def test_info_text_is_humbles(bag_dir):
-    _write('my_bag').close()
+    _write('my_bag')                 # dropped at once: the destructor closes it
     m = rosbag2_py.Info().read_metadata('my_bag', '')
     from labkit.rclpy.duration import Duration
     from labkit.rclpy.time import Time
@@ -222,7 +222,7 @@ def test_split_by_duration_like_humble(bag_dir):
     writer.create_topic(rosbag2_py.TopicMetadata('/c', 'std_msgs/msg/String', 'cdr'))
     for k in range(8):  # 0.0 .. 3.5 s
         writer.write('/c', ifc.serialize(String(data=str(k))), k * 500_000_000)
-    writer.close()
+    del writer                 # Humble closes a writer in its destructor
     m = read_metadata('split')
     assert m.relative_file_paths == ['split_0.db3', 'split_1.db3', 'split_2.db3']
     assert [f.message_count for f in m.files] == [3, 3, 2]

@@ -11,7 +11,7 @@ class SequentialReader:
         self._start = None
 
     def open(self, storage_options, converter_options=None):
-        self.close()
+        self._close()
         self._bag = BagReader(storage_options.uri, storage_options.storage_id)
         self._restart()
 
@@ -59,10 +59,18 @@ class SequentialReader:
         self._start = int(timestamp)
         self._restart()
 
-    def close(self):
+    # Humble's SequentialReader has no close() (Jazzy added it): the file is let go when
+    # the reader is (`del reader`), or when open() is called again
+    def _close(self):
         if self._bag is not None:
             self._bag.close()
             self._bag = None
+
+    def __del__(self):
+        try:
+            self._close()
+        except Exception:
+            pass
 
 
 def get_registered_readers():

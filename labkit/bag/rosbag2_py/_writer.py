@@ -64,8 +64,9 @@ class SequentialWriter:
         with self._lock:
             self._require().write(topic_name, message, time_stamp)
 
-    def close(self):
-        """(Jazzy's API; Humble closes in the destructor.)"""
+    # Humble's SequentialWriter has no close() (Jazzy added it): the bag is finished
+    # (metadata.yaml written) when the writer is let go (`del writer`) or opened again
+    def _close(self):
         with self._lock:
             if self._bag is not None:
                 self._bag.close()
