@@ -1,6 +1,7 @@
-"""`ros2 launch launch_tutorial launch_turtlesim.launch.py` (chapter 21's large project:
-six includes, a namespaced group, a YAML file, 8 nodes): wall-clock time from the
-command to every node visible in `ros2 node list`, five runs, median (goal < 1 s).
+"""`ros2 launch launch_lab big_pond.launch.py` (chapter 21's large project, its files taken
+from the notebook's %%writefile cells: includes, a namespaced group, YAML files, 8 nodes):
+wall-clock time from the command to every node visible in `ros2 node list`, five runs,
+median (goal < 1 s).
 
     python benchmarks/bench_launch.py
 
@@ -17,15 +18,38 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
-sys.path.insert(0, str(REPO / 'tests' / 'launch'))
+NOTEBOOK = REPO / 'book' / 'part3_tools' / 'ch21_launch.ipynb'
 RUNS = 5
-EXPECTED = {'/broadcaster1', '/broadcaster2', '/listener', '/mimic', '/rviz2', '/sim',
-            '/bench_fixed_broadcaster', '/turtlesim2/sim'}
+EXPECTED = {'/chaser', '/mimic', '/rviz2', '/sim', '/bench_carrot', '/turtle1_tf',
+            '/turtle2_tf', '/turtlesim2/sim'}
+
+
+def install_launch_lab(prefix):
+    """launch_lab as colcon installs it (share/launch_lab/launch|config, the ament index
+    marker), from the %%writefile cells of chapter 21 (a later cell wins, as on disk)."""
+    with open(NOTEBOOK, encoding='utf-8') as handle:
+        cells = json.load(handle)['cells']
+    share = Path(prefix) / 'share' / 'launch_lab'
+    for cell in cells:
+        source = ''.join(cell['source'])
+        if cell['cell_type'] != 'code' or not source.startswith('%%writefile '):
+            continue
+        first, _, body = source.partition('\n')
+        path = first.split()[1]
+        path = path[len('src/'):] if path.startswith('src/') else path
+        if path.startswith('launch_lab/'):
+            target = share / path[len('launch_lab/'):]
+            target.parent.mkdir(parents=True, exist_ok=True)
+            target.write_text(body + '\n', encoding='utf-8')
+    marker = Path(prefix) / 'share' / 'ament_index' / 'resource_index' / 'packages'
+    marker.mkdir(parents=True)
+    (marker / 'launch_lab').write_text('', encoding='utf-8')
+    return share
 
 
 def one_run(labkit):
     t0 = time.perf_counter()
-    job = labkit.ros2('launch launch_tutorial launch_turtlesim.launch.py')
+    job = labkit.ros2('launch launch_lab big_pond.launch.py')
     while True:
         nodes = set(labkit.ros2('node list').stdout.split())
         if nodes >= EXPECTED:
@@ -47,19 +71,18 @@ def main():
     from labkit import compat, plugins
     plugins.register_all()
     compat.activate(quiet=True)
-    from conftest import install_launch_tutorial
     with tempfile.TemporaryDirectory() as folder:
-        prefix = os.path.join(folder, 'install', 'launch_tutorial')
-        install_launch_tutorial(prefix)
+        prefix = os.path.join(folder, 'install', 'launch_lab')
+        install_launch_lab(prefix)
         os.environ['AMENT_PREFIX_PATH'] = prefix
         first = one_run(labkit)
         times = [one_run(labkit) for _ in range(RUNS)]
     figures = {
-        'launch_turtlesim_first_run_s': round(first, 4),
-        'launch_turtlesim_to_8_nodes_ready_s': round(statistics.median(times), 4),
+        'big_pond_first_run_s': round(first, 4),
+        'big_pond_to_8_nodes_ready_s': round(statistics.median(times), 4),
         'goal_s': 1.0,
     }
-    figures['meets_goal'] = figures['launch_turtlesim_to_8_nodes_ready_s'] < figures['goal_s']
+    figures['meets_goal'] = figures['big_pond_to_8_nodes_ready_s'] < figures['goal_s']
     print(json.dumps(figures))
 
 
