@@ -57,14 +57,30 @@ def _norm(name):
     return name.lower().replace('_', '-').replace('.', '-')
 
 
+# the target that requirements.lock's environment markers are read for
+WINDOWS_MARKERS = {'sys_platform': 'win32', 'platform_system': 'Windows', 'os_name': 'nt',
+                   'platform_machine': 'AMD64', 'python_version': PY_VERSION.rsplit('.', 1)[0],
+                   'python_full_version': PY_VERSION, 'implementation_name': 'cpython',
+                   'platform_python_implementation': 'CPython', 'implementation_version':
+                   PY_VERSION, 'platform_release': '', 'platform_version': '', 'extra': ''}
+
+
 def _lock_pins():
+    """{name: (name, version)} of requirements.lock for Windows amd64, CPython 3.11.9
+    (a universal lock has lines per platform, chosen by their markers)."""
+    from packaging.markers import Marker
     pins = {}
     with open(os.path.join(ROOT, 'requirements.lock'), encoding='utf-8') as f:
         for line in f:
             line = line.split('#')[0].strip()
-            if '==' in line:
-                name, version = line.split('==', 1)
-                pins[_norm(name.split('[')[0])] = (name.split('[')[0], version.split(';')[0].strip())
+            if '==' not in line:
+                continue
+            spec, _, marker = line.partition(';')
+            if marker.strip() and not Marker(marker.strip()).evaluate(WINDOWS_MARKERS):
+                continue
+            name, version = spec.split('==', 1)
+            name = name.split('[')[0].strip()
+            pins[_norm(name)] = (name, version.strip())
     for name, version in WINE_OVERRIDES.items():
         pins[_norm(name)] = (name, version)
     return pins

@@ -277,6 +277,9 @@ def _counts(junit):
     return (r.tests,)
 
 
+_WINDOWS_TEST_PATH = re.compile(r'(?<![\w:\\])((?:[\w.-]+\\)+[\w.-]+\.py)\b')
+
+
 def _shown(line, cost, virtual):
     """A line of pytest's output as a Humble machine's terminal would show it."""
     from labkit.ament import files
@@ -284,6 +287,8 @@ def _shown(line, cost, virtual):
     if files._home is not None:
         line = oslayer.slashes_after(line.replace(home, files.SHOWN_HOME),
                                      (files.SHOWN_HOME,))
+    if os.sep == '\\':     # pytest names test files with the OS's separator: test/x.py
+        line = _WINDOWS_TEST_PATH.sub(lambda m: m.group(1).replace('\\', '/'), line)
     # -c os.devnull: `../../dev/null` on Linux, `\\\\.\\nul\\` on Windows
     if line.startswith('configfile: ') and line.rstrip('\\/').endswith(os.devnull.lstrip('/')):
         return None

@@ -104,8 +104,8 @@ def test_conditions_and_environment(ws, tmp_path):
     assert 'LABKIT_LAUNCH_TEST' not in os.environ      # the launch's environment ended with it
     job = labkit.ros2(f'launch {path} mode:=real')
     job.wait(1.0)
-    assert user_lines(job.output) == ['in the group', 'set by launch', 'equals', 'a/real/c',
-                                      'fallback', 'text']
+    assert user_lines(job.output) == ['in the group', 'set by launch', 'equals',
+                                      os.path.join('a', 'real', 'c'), 'fallback', 'text']
 
 
 def test_execute_process_forms_and_idle_shutdown(ws, tmp_path):

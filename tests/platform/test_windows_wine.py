@@ -54,6 +54,12 @@ WINDOWS_EXCLUDED = {
         'links (no Developer Mode; Wine, which also has no junctions) --symlink-install copies',
     'tests/launch/test_longest_run.py::test_finds_the_whole_shared_run_through_indentation':
         "a test of the project's originality tool (labels split at '/'), not of labkit",
+    'tests/core/test_sigint.py::test_labkit_exec_sigint_shuts_the_context_down':
+        "the program sends itself SIGINT with os.kill, which on Windows is TerminateProcess "
+        '(exit code 2), not a signal',
+    'tests/workspace/test_overlay_executables.py::test_pkg_executables_lists_only_the_overlay_prefix':
+        "expects the --full-path of a workspace outside the sandbox with '/'; Windows "
+        "prints a real path with '\\' there (inside the book's sandbox: /root/...)",
     'tests/launch/test_frontends_parity.py::test_including_a_missing_file':
         "expects the missing path as written; Python's FileNotFoundError shows a Windows "
         'path with doubled backslashes (as launch on Windows prints it)',
@@ -144,19 +150,27 @@ def windows_pytest(tmp_path_factory):
     cases = []
     if report.exists():
         for case in ET.parse(report).getroot().iter('testcase'):
-            outcome = 'passed'
+            outcome, why = 'passed', ''
             for tag in ('failure', 'error', 'skipped'):
-                if case.find(tag) is not None:
+                found = case.find(tag)
+                if found is not None:
                     outcome = {'failure': 'failed', 'error': 'error', 'skipped': 'skipped'}[tag]
+                    why = (found.get('message') or '').splitlines()[:1]
             cases.append((case.get('file') or case.get('classname', ''), case.get('name'),
-                          outcome))
+                          outcome, ''.join(why)[:200]))
+    # the whole Windows output, for a look after a failure
+    (report.parent / 'windows_pytest.log').write_text(text_or(out), encoding='utf-8')
     summary = [line for line in out.splitlines() if ' in ' in line and 'passed' in line]
     return {'code': code, 'out': out, 'cases': cases, 'seconds': seconds,
             'summary': summary[-1] if summary else ''}
 
 
+def text_or(out):
+    return out if isinstance(out, str) else ''
+
+
 def _failures(cases):
-    return [f'{where}::{name} {outcome}' for where, name, outcome in cases
+    return [f'{where}::{name} {outcome}: {why}' for where, name, outcome, why in cases
             if outcome in ('failed', 'error')]
 
 
@@ -167,8 +181,7 @@ def _is_notebook(where):
 def test_unit_tests_pass_under_windows(windows_pytest):
     units = [c for c in windows_pytest['cases'] if not _is_notebook(c[0])]
     assert units, 'no unit test ran under Windows:\n' + windows_pytest['out'][-3000:]
-    assert _failures(units) == [], windows_pytest['summary'] + '\n' + \
-        windows_pytest['out'][-6000:]
+    assert _failures(units) == [], windows_pytest['summary']
     assert sum(1 for c in units if c[2] == 'passed') > 500
 
 
@@ -177,5 +190,5 @@ def test_notebooks_pass_nbval_under_windows(windows_pytest):
     ran = {os.path.basename(c[0].replace('\\', '/')) for c in notebooks}
     assert ran == {os.path.basename(n) for n in WINDOWS_NOTEBOOKS}, \
         windows_pytest['out'][-3000:]
-    assert _failures(notebooks) == [], windows_pytest['out'][-6000:]
+    assert _failures(notebooks) == [], windows_pytest['summary']
     assert windows_pytest['code'] == 0, windows_pytest['summary']
