@@ -3,6 +3,7 @@
     labkit exec [--time live|virtual] FILE [ARGS...]   run a ROS 2 Python program on labkit
     labkit ros2 VERB ...                                 run a ros2 verb (interface show, ...)
     labkit lab [--root DIR] [JUPYTERLAB OPTIONS...]      the book in JupyterLab, live time
+    labkit teacher collect FOLDER [--out DIR]             re-run learners' exercises: CSV + HTML
 """
 import argparse
 import os
@@ -25,12 +26,17 @@ def main(argv=None):
     p_ros2 = commands.add_parser('ros2', help='run a ros2 verb', add_help=False)
     p_ros2.add_argument('args', nargs=argparse.REMAINDER)
     commands.add_parser('lab', help='open the book in JupyterLab (live time)', add_help=False)
+    commands.add_parser('teacher', help="a class's grades and domains (collect, domain)",
+                        add_help=False)
     # argparse would eat the script's own options: split at FILE ourselves.
     if argv[:1] == ['ros2']:
         return ros2_main(argv[1:])
     if argv[:1] == ['lab']:
         from labkit.tools import lab
         return lab.main(argv[1:])
+    if argv[:1] == ['teacher']:
+        from labkit.teacher.__main__ import main as teacher
+        return teacher(argv[1:])
     args = parser.parse_args(argv)
     if args.command == 'exec':
         return exec_file(args.file, args.args, time_mode=args.time)
