@@ -64,12 +64,16 @@ def main(job_path: str) -> int:
         check_src = "".join(cells[job["check"]]["source"])
         between = [("".join(c["source"])) for c in cells[job["stub"] + 1: job["check"]]
                    if c["cell_type"] == "code"]
-        saved_ns = dict(shell.user_ns)
+        from labkit import process
+
+        saved_ns, saved_cwd = dict(shell.user_ns), os.getcwd()
         results = []
         for n, fx in enumerate(job["fixtures"]):
+            before = set(map(id, process.processes()))
             if n and job.get("share"):
                 shell.user_ns.clear()
                 shell.user_ns.update(saved_ns)
+                os.chdir(saved_cwd)
             reports = []
             exercises.REPORT_HOOKS[:] = [reports.append]
             _, fx_out = _run(shell, fx["code"])
@@ -88,6 +92,11 @@ def main(job_path: str) -> int:
             })
             with open(job["results"], "w", encoding="utf-8") as f:
                 json.dump(results, f, ensure_ascii=False)
+            if job.get("share"):
+                # what this fixture started ends with it (the next one starts from the prefix)
+                for proc in process.processes():
+                    if id(proc) not in before and proc.running:
+                        proc.stop()
     finally:
         try:
             import labkit
