@@ -89,11 +89,13 @@ def test_action_server_aborts_its_goal_on_the_shutdown_path():
     tree = ast.parse(open(path, encoding='utf-8').read())
     execute = next(n for n in ast.walk(tree)
                    if isinstance(n, ast.FunctionDef) and n.name == 'execute_callback')
-    # every `return` inside the loop's `if not rclpy.ok()` follows goal_handle.abort()
+    # the loop's `if not rclpy.ok():` branch calls goal_handle.abort() before it returns
     for node in ast.walk(execute):
         if isinstance(node, ast.If) and 'rclpy.ok' in ast.unparse(node.test):
-            calls = [ast.unparse(s) for s in node.body]
+            calls = [ast.unparse(n) for stmt in node.body for n in ast.walk(stmt)
+                     if isinstance(n, ast.Call)]
             assert 'goal_handle.abort()' in calls, calls
+            assert isinstance(node.body[-1], ast.Return)
             break
     else:
         pytest.fail('execute_callback never checks rclpy.ok()')
