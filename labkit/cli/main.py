@@ -101,6 +101,10 @@ def _join_dds(settle=False):
     try:
         dds.connect()
     except dds.ConfigError as e:
+        if os.environ.get('ROS_DOMAIN_ID', '').strip().isdigit():
+            # a domain DDS cannot map to ports: the program runs until its first node,
+            # which ends it with Fast DDS's line, as on Humble (labkit.rclpy.node)
+            return True
         print(f"labkit: {e}", file=sys.stderr)
         return False
     except Exception as e:   # no DDS here: keep working in-process, say so once

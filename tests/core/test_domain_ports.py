@@ -47,3 +47,18 @@ def test_env_domain_in_the_main_process(virtual, monkeypatch, capsys):
         assert capsys.readouterr().out == LINE + '\n'
     finally:
         rclpy.try_shutdown()
+
+
+def test_labkit_exec_runs_until_the_first_node(tmp_path):
+    """As on Humble: nothing refuses ROS_DOMAIN_ID=240 before the program makes a node."""
+    import os
+    import subprocess
+    import sys
+    path = tmp_path / 'far.py'
+    path.write_text("import rclpy\nrclpy.init()\nprint('init ok', flush=True)\n"
+                    "rclpy.create_node('far')\nprint('node made')\n", encoding='utf-8')
+    env = dict(os.environ, ROS_DOMAIN_ID='240', LABKIT_TIME='live', LABKIT_DDS='on',
+               PYTHONPATH=os.getcwd())
+    done = subprocess.run([sys.executable, '-m', 'labkit', 'exec', str(path)], env=env,
+                          capture_output=True, text=True, timeout=60)
+    assert (done.returncode, done.stdout) == (1, 'init ok\n' + LINE + '\n'), done.stderr
