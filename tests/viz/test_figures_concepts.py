@@ -1,7 +1,9 @@
 """The concept pictures (ch01, 07, 11, 12, 13, 16, 17, 19, 25, connect_real_ros): each is
 drawn from what labkit really has at that moment, and legible at the 720 px column."""
 import html
+import os
 import re
+import sys
 
 import pytest
 
@@ -20,13 +22,21 @@ def _legible(svg):
     return s
 
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                                "workspace"))
+from conftest_ws import clean_env  # noqa: E402,F401  (what `source` changes is put back)
+
+
 @pytest.fixture
-def home(tmp_path):
+def home(tmp_path, clean_env):
+    from labkit.ament import source
     labkit.reset()
+    sourced = list(source._sourced)
     ament.use_home(str(tmp_path / "home"))
     yield
     labkit.reset()
     ament.leave_home()
+    source._sourced[:] = sourced
 
 
 @pytest.fixture
