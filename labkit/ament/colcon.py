@@ -23,7 +23,7 @@ import os
 import time
 
 from labkit import oslayer
-from labkit.ament import build, workspace
+from labkit.ament import build, files, workspace
 
 VERBS = ('build', 'list', 'test', 'test-result')
 
@@ -225,7 +225,8 @@ def run_command(command):
         return CompletedCommand(['colcon', *argv], 0, out.getvalue(), err.getvalue(), None,
                                 chunks)
     try:
-        args = parser.parse_args(argv)
+        # a path typed back as labkit printed it (/root/... of the sandbox) means that folder
+        args = parser.parse_args([files.expand_arg(a) for a in argv])
     except ParserExit as e:
         return CompletedCommand(['colcon', *argv], e.status, out.getvalue(), err.getvalue(),
                                 None, chunks)

@@ -72,3 +72,19 @@ def test_ros2_bag_info_of_the_printed_folder(sandbox):
     r = labkit.ros2('bag info /root/my_bag')
     assert r.returncode == 0, r.stderr
     assert r.stdout.startswith('\nFiles:             my_bag_0.db3\n')
+
+
+def test_colcon_and_rosdep_take_the_printed_paths(sandbox):
+    from labkit.ament import colcon
+    files.mkdir('~/ros2_ws/src')
+    files.cd('~/ros2_ws/src')
+    assert labkit.ros2('pkg create --build-type ament_python --dependencies rclpy '
+                       '-- my_pkg').returncode == 0
+    files.cd('~')
+    r = colcon.run_command('list --base-paths /root/ros2_ws/src')
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.startswith('my_pkg\t')
+    from labkit.ament import rosdep
+    r = rosdep.run_command('keys --from-paths /root/ros2_ws/src')
+    assert r.returncode == 0, r.stderr
+    assert 'rclpy' in r.stdout.split()
