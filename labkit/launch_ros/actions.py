@@ -24,12 +24,15 @@ def executable_path(package, executable):
                 "package '{}' not found, searching: {}".format(
                     package, index.search_paths_shown()))
         prefix = index.SHOWN_INSTALL_PREFIX
-    libexec = posixpath.join(prefix, 'lib', package)       # a printed path: '/' on every OS
+    # a printed path: /opt/ros/humble/... and /root/... with '/' on every OS; a real
+    # Windows path (a workspace outside the book's sandbox) with its own separator
+    join = posixpath.join if prefix.startswith('/') else os.path.join
+    libexec = join(prefix, 'lib', package)
     if executables.lookup(package, executable) is None:
         raise RuntimeError(
             "executable '{}' not found on the libexec directory '{}' ".format(
                 executable, libexec))
-    return posixpath.join(libexec, executable)
+    return join(libexec, executable)
 
 
 class Node(Action):

@@ -136,6 +136,79 @@ def test_talker_listener_with_labkit_exec_in_virtual_time(tmp_path):
     assert lines[-1] == '[INFO] [1704067202.500000000] [listener]: I heard: "Hello World: 5"'
 
 
+WINDOWS_TALKER = '''
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+    rclpy.init()
+    node = Node('windows_talker')
+    pub = node.create_publisher(String, 'chatter', 10)
+    count = [0]
+
+    def tick():
+        count[0] += 1
+        pub.publish(String(data=f'from Windows {count[0]}'))
+        if count[0] >= 40:
+            raise SystemExit(0)
+
+    node.create_timer(0.25, tick)
+    try:
+        rclpy.spin(node)
+    except SystemExit:
+        pass
+'''
+
+LINUX_LISTENER = '''
+    import time
+    import rclpy
+    from rclpy.node import Node
+    from std_msgs.msg import String
+
+    rclpy.init()
+    node = Node('linux_listener')
+    heard = []
+    node.create_subscription(String, 'chatter', lambda m: heard.append(m.data), 10)
+    end = time.monotonic() + 20
+    while time.monotonic() < end and len(heard) < 5:
+        rclpy.spin_once(node, timeout_sec=0.2)
+    print('\\n'.join(heard))
+'''
+
+
+def test_dds_on_loopback_from_windows_to_linux(tmp_path):
+    """Two terminals across OSes: a talker under Windows' labkit (Cyclone configured by
+    the address 127.0.0.1, which every OS has) is heard by a listener under Linux's."""
+    _prepared()
+    domain = str(150 + os.getpid() % 60)
+    talker = tmp_path / 'talker.py'
+    talker.write_text(textwrap.dedent(WINDOWS_TALKER), encoding='utf-8')
+    listener = tmp_path / 'listener.py'
+    listener.write_text(textwrap.dedent(LINUX_LISTENER), encoding='utf-8')
+    windows = subprocess.Popen(
+        wine_env.command(['-m', 'labkit', 'exec', _windows_path(str(talker))]),
+        env=wine_env.wine_environ({'ROS_DOMAIN_ID': domain, 'LABKIT_DDS': 'on'}), cwd=ROOT,
+        stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
+    try:
+        env = dict(os.environ, ROS_DOMAIN_ID=domain, LABKIT_DDS='on', PYTHONPATH=ROOT)
+        env.pop('LABKIT_TIME', None)
+        linux = subprocess.run([sys.executable, '-m', 'labkit', 'exec', str(listener)],
+                               env=env, cwd=ROOT, capture_output=True, text=True,
+                               encoding='utf-8', timeout=120)
+    finally:
+        try:
+            windows.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            windows.kill()
+            windows.wait()
+    out = windows.stdout.read().decode('utf-8', 'replace')
+    heard = [line for line in linux.stdout.splitlines() if line.startswith('from Windows ')]
+    assert len(heard) >= 5, linux.stdout + linux.stderr + out[-2000:]
+    numbers = [int(line.split()[-1]) for line in heard]
+    assert numbers == sorted(numbers)
+    assert windows.returncode == 0, out[-2000:]
+
+
 @pytest.fixture(scope='module')
 def windows_pytest(tmp_path_factory):
     """One Windows pytest over the unit tests and the notebooks; its JUnit report."""
