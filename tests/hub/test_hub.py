@@ -36,14 +36,14 @@ def _port():
 
 
 class Hub:
-    def __init__(self, tmp_path):
+    def __init__(self, tmp_path, idle_timeout=15):
         self.dir = tmp_path
         self.port = _port()
         self.base = f"http://127.0.0.1:{self.port}"
         env = dict(os.environ, HUBTEST_DIR=str(tmp_path), HUBTEST_PORT=str(self.port),
                    HUBTEST_HUB_PORT=str(_port()), HUBTEST_PROXY_API_PORT=str(_port()),
                    HUBTEST_CHP=str(CHP), HUBTEST_PASSWORDS=json.dumps(PASSWORDS),
-                   PYTHONPATH=str(REPO), HUBTEST_IDLE_TIMEOUT="15")
+                   PYTHONPATH=str(REPO), HUBTEST_IDLE_TIMEOUT=str(idle_timeout))
         env.pop("LABKIT_EXERCISE_LOG", None)
         self.log = open(tmp_path / "hub.log", "w", encoding="utf-8")
         self.proc = subprocess.Popen(
