@@ -255,15 +255,21 @@ class Checker:
         return wanted
 
 
-def collect(topic: str, type_name: str, seconds: float = 1.0, qos=10) -> list:
-    """The messages that arrive on `topic` while the graph runs for `seconds`."""
+def collect(topic: str, type_name: str, seconds: float = 1.0, qos=10, *, stamped: bool = False) -> list:
+    """The messages that arrive on `topic` while the graph runs for `seconds`; with
+    stamped=True, (arrival time in seconds of ROS time, message) pairs."""
     import labkit.rclpy as rclpy
     from labkit.interfaces import get_type
     from labkit.rclpy.duration import Duration
 
     node = _graph_node()
     got = []
-    sub = node.create_subscription(get_type(type_name), topic, got.append, qos)
+    clock = node.get_clock()
+
+    def arrived(msg):
+        got.append((clock.now().nanoseconds * 1e-9, msg) if stamped else msg)
+
+    sub = node.create_subscription(get_type(type_name), topic, arrived, qos)
     try:
         end = node.get_clock().now() + Duration(seconds=seconds)
         while node.get_clock().now() < end:

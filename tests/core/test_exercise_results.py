@@ -87,3 +87,28 @@ def test_an_error_after_the_report_is_not_the_checks(shell, capsys):
                          "c.report()\n"
                          "raise ValueError('learner code after the check')\n")
     assert not res.success and isinstance(res.error_in_exec, ValueError)
+
+
+def test_collect_stamped_gives_arrival_times_in_ros_time():
+    import labkit
+    from labkit import process
+
+    def talker(args=None):
+        import labkit.rclpy as rclpy
+        from labkit.interfaces import get_type
+        rclpy.init(args=args)
+        node = rclpy.create_node("ticker")
+        pub = node.create_publisher(get_type("std_msgs/msg/Int32"), "/ticks", 10)
+        node.create_timer(0.4, lambda: pub.publish(get_type("std_msgs/msg/Int32")(data=1)))
+        try:
+            rclpy.spin(node)
+        finally:
+            node.destroy_node()
+            rclpy.try_shutdown()
+
+    job = process.start(main=talker, name="ticker")
+    got = exercises.collect("/ticks", "std_msgs/msg/Int32", 2.0, stamped=True)
+    gaps = [round(b[0] - a[0], 3) for a, b in zip(got, got[1:])]
+    assert len(got) >= 4 and set(gaps) == {0.4}
+    job.stop()
+    labkit.reset()
