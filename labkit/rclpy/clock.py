@@ -152,6 +152,8 @@ class ROSClock(Clock):
             return
         before = self._now_ns()
         self._ros_time_is_active = bool(enabled)
+        from labkit.rclpy.timer import TIMER_GEN
+        TIMER_GEN[0] += 1                 # executors file timers under their time source
         change = ClockChange.ROS_TIME_ACTIVATED if enabled else ClockChange.ROS_TIME_DEACTIVATED
         self._jump(change, self._now_ns() - before)
         world.notify()

@@ -1,6 +1,7 @@
 """Executors: run the callbacks of their nodes. Work is found in O(1) from a ready-queue that
 subscriptions/services/clients/guards push themselves onto; timers and tasks are polled."""
 from collections import deque
+import heapq
 import inspect
 import multiprocessing
 import threading
@@ -8,6 +9,7 @@ import threading
 from labkit.graph import world
 from labkit.rclpy import _wait
 from labkit.rclpy._entity import ENTITY_GEN
+from labkit.rclpy.timer import TIMER_GEN
 from labkit.rclpy.clock import Clock, ClockType
 from labkit.rclpy.guard_condition import enter_context_handle
 from labkit.rclpy.subscription import _NOTHING
@@ -82,6 +84,9 @@ class Executor:
         self._wake_gen = 0
         self._timer_cache = ()
         self._timer_gen = None
+        self._heaps = {}
+        self._timer_entry = {}
+        self._heap_gen = None
         self._has_waitables = False
         # rclpy.spin_once(node) adds then removes its node; the removal is deferred until
         # anything else uses this executor, which is the same to observe and much cheaper.
@@ -206,6 +211,81 @@ class Executor:
         self._timer_cache = tuple(t for node in nodes for t in node._timers)
         self._has_waitables = any(node._Node__waitables for node in nodes)
         self._timer_gen = ENTITY_GEN[0]
+        self._build_heaps()
+
+    # Due timers are found through heaps instead of asking every timer's clock on every spin.
+    # Per time source (steady time, system time, or one clock that follows /clock) a heap
+    # of deadlines holds the timers not yet due, [deadline, order, timer]; those found due
+    # move to a heap by order (node order, then creation order), so the first due timer in
+    # that order fires, exactly as when every timer was scanned in that order. A timer's
+    # current entry is self._timer_entry[timer]; other entries are stale and dropped.
+    # Deadlines move only through _call() (the executor files the timer again), reset() or
+    # a new period, and /clock switching on or off: the last two bump TIMER_GEN, and the
+    # heaps are rebuilt.
+    def _build_heaps(self):
+        heaps = {}
+        entries = {}
+        for order, tmr in enumerate(self._timer_cache):
+            if tmr._canceled:
+                continue
+            entry = [tmr._next_call, order, tmr]
+            entries[tmr] = entry
+            heaps.setdefault(_source(tmr._clock), ([], []))[0].append(entry)
+        for pending, _ in heaps.values():
+            heapq.heapify(pending)
+        self._heaps = heaps
+        self._timer_entry = entries
+        self._heap_gen = TIMER_GEN[0]
+
+    def _timer_heaps(self):
+        if self._timer_gen != ENTITY_GEN[0]:
+            self._refresh()
+        elif self._heap_gen != TIMER_GEN[0]:
+            self._build_heaps()
+        return self._heaps
+
+    def _first_due(self, source, pending, ready):
+        """(order, entry) of the first due timer of one source whose callback group can
+        run it, or None; the due ones move from `pending` to `ready` on the way."""
+        entries = self._timer_entry
+        now = None
+        while pending:
+            entry = pending[0]
+            tmr = entry[2]
+            if entries.get(tmr) is not entry or tmr._canceled:
+                heapq.heappop(pending)
+                continue
+            if now is None:
+                now = tmr._clock._now_ns()
+            if entry[0] > now:
+                break
+            heapq.heappop(pending)
+            heapq.heappush(ready, (entry[1], entry))
+        aside = None
+        found = None
+        while ready:
+            item = ready[0]
+            entry = item[1]
+            tmr = entry[2]
+            if entries.get(tmr) is not entry or tmr._canceled:
+                heapq.heappop(ready)
+                continue
+            if now is None:
+                now = tmr._clock._now_ns()
+            if entry[0] > now:            # its clock went back (/clock): not due any more
+                heapq.heappop(ready)
+                heapq.heappush(pending, entry)
+                continue
+            if tmr.callback_group.can_execute(tmr):
+                found = item
+                break
+            if aside is None:
+                aside = []
+            aside.append(heapq.heappop(ready))
+        if aside:
+            for item in aside:
+                heapq.heappush(ready, item)
+        return found
 
     def _ready_task(self):
         tasks = self._tasks
@@ -219,11 +299,24 @@ class Executor:
         return None
 
     def _due_timer(self):
-        for tmr in self._timers():
-            if (not tmr._canceled and tmr._clock._now_ns() >= tmr._next_call
-                    and tmr.callback_group.can_execute(tmr)):
-                return tmr
-        return None
+        best = None
+        for source, (pending, ready) in self._timer_heaps().items():
+            if pending or ready:
+                item = self._first_due(source, pending, ready)
+                if item is not None and (best is None or item[0] < best[0]):
+                    best = item
+        return None if best is None else best[1][2]
+
+    def _call_timer(self, tmr):
+        """rcl_timer_call, and the timer filed again under its next deadline."""
+        tmr._call()
+        entry = self._timer_entry.get(tmr)
+        if entry is not None:
+            heaps = self._heaps.get(_source(tmr._clock))
+            if heaps is not None:
+                new = [tmr._next_call, entry[1], tmr]
+                self._timer_entry[tmr] = new          # the old entry is stale now
+                heapq.heappush(heaps[0], new)
 
     def _waitable_work(self):
         for node in list(self._nodes):
@@ -245,7 +338,7 @@ class Executor:
         if self._timer_cache:
             tmr = self._due_timer()
             if tmr is not None and tmr.callback_group.beginning_execution(tmr):
-                tmr._call()
+                self._call_timer(tmr)
                 return ('timer', tmr, None)
         ready = self._ready
         while ready:
@@ -279,10 +372,9 @@ class Executor:
             for task, _, _ in self._tasks:
                 if task._ready():
                     return True
-        for tmr in self._timers():
-            if not tmr._canceled and tmr._clock._now_ns() >= tmr._next_call:
-                if tmr.callback_group.can_execute(tmr):
-                    return True
+        if self._timer_cache or self._timer_gen != ENTITY_GEN[0]:
+            if self._due_timer() is not None:
+                return True
         for node in self._nodes:
             if node._Node__waitables:
                 for wt in node.waitables:
@@ -291,6 +383,31 @@ class Executor:
         return False
 
     def _next_timer_wait_ns(self):
+        best = None
+        exact = True
+        for source, (pending, ready) in self._timer_heaps().items():
+            if source.__class__ is not str:
+                continue                  # follows /clock: nothing to wait for
+            if self._first_due(source, pending, ready) is not None:
+                return 0
+            entries = self._timer_entry
+            while pending:
+                entry = pending[0]
+                tmr = entry[2]
+                if entries.get(tmr) is not entry or tmr._canceled:
+                    heapq.heappop(pending)
+                    continue
+                if not tmr.callback_group.can_execute(tmr):
+                    exact = False         # a busy group's timer comes first: scan them all
+                    break
+                w = tmr._wait_ns()
+                if w is not None and (best is None or w < best):
+                    best = w
+                break
+            if not exact:
+                break
+        if exact:
+            return best
         best = None
         for tmr in self._timers():
             if not tmr.callback_group.can_execute(tmr):
@@ -413,6 +530,16 @@ class Executor:
         finally:
             self._release(waitable)
             self.wake()
+
+
+def _source(clock):
+    """What a clock's now comes from: 'steady', 'system', or the clock itself while it
+    follows /clock (ROS time active)."""
+    if clock._clock_type == ClockType.STEADY_TIME:
+        return 'steady'
+    if clock._ros_time_is_active:
+        return clock
+    return 'system'
 
 
 def _is_coroutine_function(entity, callback):

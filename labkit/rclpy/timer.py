@@ -4,6 +4,10 @@ import threading
 from labkit.graph import world
 from labkit.rclpy._clock_type import ClockType
 
+# Bumped when a timer's deadline moves other than by firing (reset, a new period) or a clock
+# starts or stops following /clock: executors then file their timers' deadlines again.
+TIMER_GEN = [0]
+
 
 class Timer:
     def __init__(self, callback, callback_group, timer_period_ns, clock, *, context=None):
@@ -58,6 +62,7 @@ class Timer:
         now = self._clock._now_ns()
         self._canceled = False
         self._next_call = now + self._period
+        TIMER_GEN[0] += 1
         if self._node is not None:
             self._node._wake_executor()
         world.notify()
