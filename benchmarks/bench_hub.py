@@ -4,7 +4,8 @@
 
 Starts the hub of tests/hub (127.0.0.1, configurable-http-proxy, local spawner) with
 learners in LIVE time (as on a real hub), then measures through the hub, as a browser:
-  1. one learner: the single-user server's memory idle; its kernel running ch03 and then
+  1. one learner (memory as PSS: shared libraries split among the processes using them):
+     the single-user server's memory idle; its kernel running ch03 and then
      ch14 (the Part 2 node tasks, in a copy of the chapter's folder): wall time, CPU
      seconds (server + kernel), peak memory; CPU while idle afterwards (simulators left
      running, as a learner leaves them);
@@ -50,7 +51,7 @@ def _procs(user):
 
 
 class Meter(threading.Thread):
-    """Samples RSS (sum) and CPU seconds of a learner's processes every 0.25 s."""
+    """Samples memory (PSS, sum) and CPU seconds of a learner's processes every 0.25 s."""
 
     def __init__(self, user):
         super().__init__(daemon=True)
@@ -70,10 +71,13 @@ class Meter(threading.Thread):
     def rss_now(self):
         total = 0
         for p in _procs(self.user):
-            try:
-                total += p.memory_info().rss
-            except psutil.Error:
-                pass
+            try:           # PSS: shared libraries counted once across the class
+                total += p.memory_full_info().pss
+            except (psutil.Error, AttributeError):
+                try:
+                    total += p.memory_info().rss
+                except psutil.Error:
+                    pass
         return total
 
     def run(self):
@@ -97,7 +101,9 @@ async def _run_notebook(hub, user, token, path, nb):
     t0 = time.monotonic()
     for code in _cells(nb):
         await k.run(code, timeout=300)
-    return k, time.monotonic() - t0
+    wall = time.monotonic() - t0
+    k.ws.close()
+    return k, wall
 
 
 def _start(hub, users, passwords):
@@ -157,7 +163,6 @@ def main():
             time.sleep(10)
             fig[f"{name}_after_idle_cpu_pct"] = round((m.cpu_now() - c0) / 10 * 100, 1)
             fig[f"{name}_after_mb"] = round(m.rss_now() / 2**20)
-            kernel.ws.close()
         hub.request("DELETE", f"/hub/api/users/{one}/server", tokens[one])
         time.sleep(3)
 
@@ -186,8 +191,6 @@ def main():
                     res = await asyncio.gather(*(_run_notebook(hub, u, toks[u], "ch03_topics.ipynb",
                                                                load()) for u in group))
                     done.append(1)
-                    for k, _ in res:
-                        k.ws.close()
                     return time.monotonic() - t0, [w for _, w in res]
                 (wall, walls), _ = await asyncio.gather(learners(), probing())
                 pk.ws.close()
