@@ -17,7 +17,7 @@ def main(argv=None):
     window.ENABLED = True
     parser = argparse.ArgumentParser(
         prog='labkit', description='Run ROS 2 Python programs and ros2 verbs on labkit.')
-    commands = parser.add_subparsers(dest='command', metavar='{exec,ros2,lab}')
+    commands = parser.add_subparsers(dest='command', metavar='{exec,ros2,lab,teacher}')
     p_exec = commands.add_parser('exec', help='run FILE as __main__ with rclpy = labkit')
     p_exec.add_argument('--time', choices=('live', 'virtual'), default='live',
                         help='time mode (default: live, like a real ROS 2 process)')
