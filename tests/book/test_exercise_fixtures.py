@@ -18,7 +18,15 @@ as <chapter>.exercises.yaml:
 
 Each fixture runs the way a learner's cell does (tests/book/exercise_fixture_runner.py):
 the cells before the stub as stored, the fixture in place of the stub, the stored check
-cell; fresh process per fixture, two at a time (the machine's two cores).
+cell; fresh process per fixture, two at a time (the machine's two cores); with
+`share: true` one process runs the prefix once and the exercise's fixtures one after
+another (each fixture's processes stopped, the namespace and cwd put back): for
+exercises whose prefix is slow and whose fixtures start their own processes.
+
+Measured (2026-11-28, 2 cores shared with other work, load average ~11): 209 fixtures
+of 30 exercises in 191 runs, 579 s; the slowest are ch10's (a 30-90 s prefix each, not
+shared because each fixture stops the prefix's camera). One chapter:
+`pytest tests/book/test_exercise_fixtures.py -k ch02`.
 """
 from __future__ import annotations
 
