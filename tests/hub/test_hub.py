@@ -280,7 +280,9 @@ def test_three_learners_on_a_hub(tmp_path):
             time.sleep(1)
         else:
             pytest.fail("the idle culler did not stop carol's server\n" + hub.logtext())
-        assert "idle-culler" in hub.logtext()
+        log = (hub.dir / "hub.log").read_text(encoding="utf-8")
+        assert "DELETE /hub/api/users/carol/server (idle-culler@127.0.0.1)" in log
+        assert "/users/alice/server (idle-culler" not in log   # stopped by its learner
         assert all(not hub.request("GET", f"/hub/api/users/{u}", tokens[u])[1]["servers"]
                    for u in PASSWORDS)
     finally:
