@@ -204,6 +204,7 @@ def main():
             for u in group:
                 hub.request("DELETE", f"/hub/api/users/{u}/server", toks[u])
             time.sleep(3)
+        hub.request("DELETE", f"/hub/api/users/{probe}/server", ptok[probe])
     finally:
         hub.stop()
         shutil.rmtree(tmp, ignore_errors=True)

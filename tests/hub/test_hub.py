@@ -40,8 +40,9 @@ class Hub:
         self.dir = tmp_path
         self.port = _port()
         self.base = f"http://127.0.0.1:{self.port}"
+        self.hub_port = _port()
         env = dict(os.environ, HUBTEST_DIR=str(tmp_path), HUBTEST_PORT=str(self.port),
-                   HUBTEST_HUB_PORT=str(_port()), HUBTEST_PROXY_API_PORT=str(_port()),
+                   HUBTEST_HUB_PORT=str(self.hub_port), HUBTEST_PROXY_API_PORT=str(_port()),
                    HUBTEST_CHP=str(CHP), HUBTEST_PASSWORDS=json.dumps(PASSWORDS),
                    PYTHONPATH=str(REPO), HUBTEST_IDLE_TIMEOUT=str(idle_timeout))
         env.pop("LABKIT_EXERCISE_LOG", None)
@@ -82,14 +83,29 @@ class Hub:
         return (self.dir / "hub.log").read_text(encoding="utf-8")[-4000:]
 
     def stop(self):
+        """SIGTERM to the hub: it stops the learners' servers, its services and the proxy
+        itself; whatever of this hub is still running after that is ended here."""
         if self.proc.poll() is None:
-            os.killpg(self.proc.pid, signal.SIGTERM)
+            self.proc.send_signal(signal.SIGTERM)
             try:
-                self.proc.wait(30)
+                self.proc.wait(60)
             except subprocess.TimeoutExpired:
                 os.killpg(self.proc.pid, signal.SIGKILL)
                 self.proc.wait()
         self.log.close()
+        import psutil
+        api = f"127.0.0.1:{self.hub_port}/"
+        left = []
+        for p in psutil.process_iter(["environ"]):
+            env = p.info["environ"] or {}
+            if env.get("HUBTEST_DIR") == str(self.dir) or api in env.get("JUPYTERHUB_API_URL", ""):
+                left.append(p)
+        for p in left:
+            try:
+                p.terminate()
+            except psutil.Error:
+                pass
+        psutil.wait_procs(left, timeout=10)
 
 
 def _message(session, code):
