@@ -54,7 +54,7 @@ def linux(args):
 
 def row(name, samples):
     med = statistics.median(samples)
-    print(f'{name:<44} {med:7.1f} s   (runs: {", ".join(f"{s:.1f}" for s in samples)})',
+    print(f'{name:<52} {med:7.1f} s   (runs: {", ".join(f"{s:.1f}" for s in samples)})',
           flush=True)
 
 
