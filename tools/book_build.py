@@ -18,22 +18,15 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import book_assets  # noqa: E402  (sibling script)
+import make  # noqa: E402  (sibling script: npm ci, shared with the test set-up)
 
 ROOT = book_assets.ROOT
 
 
 def ensure_node_modules(root: Path = ROOT) -> None:
-    stamp = root / "node_modules" / ".package-lock.json"  # written by npm ci
-    lock = root / "package-lock.json"
-    if stamp.is_file() and stamp.stat().st_mtime >= lock.stat().st_mtime:
-        return
-    npm = shutil.which("npm")
-    if npm is None:
+    if not make.ensure_node_modules(root):
         raise SystemExit("book_build: node_modules is missing and `npm` is not installed "
                          "(install Node.js, then run `npm ci` in the repository root)")
-    print("book_build: npm ci", flush=True)
-    subprocess.run([npm, "ci", "--ignore-scripts", "--no-audit", "--no-fund"],
-                   cwd=root, check=True)
 
 
 def no_network_prefix() -> list[str]:

@@ -143,6 +143,23 @@ def setup_rosref():
     return venv_python(ROSREF)
 
 
+def ensure_node_modules(root=ROOT):
+    """`npm ci` when node_modules is missing or older than package-lock.json: the book's
+    offline assets and configurable-http-proxy (the JupyterHub tests) come from npm."""
+    stamp = root / "node_modules" / ".package-lock.json"   # written by npm ci
+    lock = root / "package-lock.json"
+    if stamp.is_file() and stamp.stat().st_mtime >= lock.stat().st_mtime:
+        return True
+    npm = shutil.which("npm")
+    if npm is None:
+        say("node_modules is missing and `npm` is not installed (install Node.js, then run "
+            "`npm ci` in the repository root)")
+        return False
+    say("npm ci")
+    subprocess.run([npm, "ci", "--ignore-scripts", "--no-audit", "--no-fund"], cwd=root, check=True)
+    return True
+
+
 def follow(cmd, env=None):
     """Run a job's command to its end; Ctrl+C reaches it through the terminal (pytest
     prints its summary, JupyterLab asks or stops), so we wait for it instead of killing."""
@@ -186,6 +203,7 @@ def main(argv=None):
     python = setup_venv(level)
     if level == "test":
         setup_rosref()
+        ensure_node_modules()
     if job == "setup":
         return 0
     if job == "bench":
