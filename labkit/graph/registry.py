@@ -61,6 +61,7 @@ class Graph:
         self.lock = threading.RLock()
         self.nodes = []
         self.endpoints = {PUB: {}, SUB: {}, SRV: {}, CLI: {}}   # kind -> name -> [Endpoint]
+        self._by_node = {}            # NodeInfo -> its endpoints, in the order added
         self.version = 0
         self._gids = itertools.count(1)
         self.listeners = []           # callables run after each graph change
@@ -90,10 +91,15 @@ class Graph:
 
     def remove_node(self, info):
         with self.lock:
-            for kind in self.endpoints:
-                for name, eps in list(self.endpoints[kind].items()):
-                    for ep in [e for e in eps if e.node is info]:
-                        self._remove(ep)
+            # the node's own endpoints (not a scan of every name); each topic that lost a
+            # subscription is matched again once
+            topics = {}
+            for ep in list(self._by_node.get(info, ())):
+                if self._remove(ep, rematch=False):
+                    topics[ep.name] = None
+            for topic in topics:
+                self._rematch(topic)
+            self._by_node.pop(info, None)
             if info in self.nodes:
                 self.nodes.remove(info)
             self._changed()
@@ -104,6 +110,7 @@ class Graph:
             kind = {PUB: 0x03, SUB: 0x04, SRV: 0x04, CLI: 0x03}[ep.kind]
             ep.gid = self._gid(getattr(ep.node.process, "pid", 0), kind)
             self.endpoints[ep.kind].setdefault(ep.name, []).append(ep)
+            self._by_node.setdefault(ep.node, []).append(ep)
             if ep.kind in (PUB, SUB):
                 self._rematch(ep.name, new=ep)
             self._changed()
@@ -114,14 +121,24 @@ class Graph:
             self._remove(ep)
             self._changed()
 
-    def _remove(self, ep):
+    def _remove(self, ep, rematch=True):
+        """Returns True when the topic's matches must be computed again: a subscription
+        went (a publisher that goes changes no other publisher's matches)."""
         eps = self.endpoints[ep.kind].get(ep.name)
         if eps and ep in eps:
             eps.remove(ep)
             if not eps:
                 del self.endpoints[ep.kind][ep.name]
-            if ep.kind in (PUB, SUB):
-                self._rematch(ep.name)
+            own = self._by_node.get(ep.node)
+            if own is not None and ep in own:
+                own.remove(ep)
+                if not own:
+                    del self._by_node[ep.node]
+            if ep.kind == SUB:
+                if rematch:
+                    self._rematch(ep.name)
+                return True
+        return False
 
     def _rematch(self, topic, new=None):
         pubs = self.endpoints[PUB].get(topic, [])
@@ -202,6 +219,7 @@ class Graph:
     def clear(self):
         with self.lock:
             self.nodes.clear()
+            self._by_node.clear()
             for kind in self.endpoints:
                 self.endpoints[kind].clear()
             self._changed()
