@@ -12,7 +12,9 @@ import sys
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
-DEFAULT_REFERENCE = '/tmp/rosref/bin/python'  # recipe: benchmarks/README.md
+# the reference venv `make setup` builds where real rclpy's wheels exist (benchmarks/README.md)
+DEFAULT_REFERENCE = str(REPO / '.venv-rosref' / ('Scripts/python.exe' if os.name == 'nt'
+                                                 else 'bin/python'))
 
 
 def reference_python():

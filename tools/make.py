@@ -207,11 +207,16 @@ def main(argv=None):
     if job == "setup":
         return 0
     if job == "bench":
+        failed = []             # every benchmark runs; the ones that failed are named at the end
         for script in sorted((ROOT / "benchmarks").glob("*.py")):
+            if script.name.startswith("_"):
+                continue
             print(f"== {script.relative_to(ROOT).as_posix()}", flush=True)
             if follow([python, script], env=job_env()):
-                return 1
-        return 0
+                failed.append(script.name)
+        if failed:
+            print("benchmarks that failed: " + ", ".join(failed), flush=True)
+        return 1 if failed else 0
     cmd = [python, *JOBS[job][1], *extra]
     # labkit.tools.lab sets live time itself
     return follow(cmd, env=None if job == "lab" else job_env())

@@ -6,7 +6,7 @@ Writes expected/jazzy/<name>.txt (raw reference stdout) and, for a script that h
 expected/<name>.txt yet, a first copy of it. expected/<name>.txt is the Humble truth:
 where Humble and Jazzy differ (documented at the top of each script) it is edited by
 hand. For a script that already has one, the differences are shown for review.
-Reference interpreter: $ROSREF_PYTHON, else /tmp/rosref/bin/python (see benchmarks/README.md).
+Reference interpreter: $ROSREF_PYTHON, else .venv-rosref/bin/python (see benchmarks/README.md).
 """
 import difflib
 import os
@@ -20,7 +20,7 @@ from _scripts import EXPECTED, JAZZY, REFSHIM, run, script_args, scripts  # noqa
 
 
 def reference_python():
-    python = os.environ.get('ROSREF_PYTHON', '/tmp/rosref/bin/python')
+    python = os.environ.get('ROSREF_PYTHON', str(Path(__file__).resolve().parents[2] / '.venv-rosref' / 'bin' / 'python'))
     if not Path(python).exists():
         sys.exit(f'no reference interpreter at {python}: set ROSREF_PYTHON')
     return python
