@@ -1,7 +1,8 @@
 """Give every reference-solution cell of the book its collapsed form.
 
-A cell tagged ``solution`` is collapsed in JupyterLab (``source_hidden``) and
-in the HTML book (tag ``hide-input``), and its toggle says 显示参考答案 /
+A cell tagged ``solution`` is collapsed in JupyterLab (``source_hidden`` and
+``outputs_hidden``) and in the HTML book (tags ``hide-input`` and ``hide-output``:
+one toggle for code and output, whose output would give the answer away), and its toggle says 显示参考答案 /
 隐藏参考答案 instead of the generic 显示代码. JupyterLab still shows a collapsed
 cell's first line, so that line is a comment saying what the cell is (unless
 the cell is a ``%%`` cell magic, which must stay first). Run after editing notebooks:
@@ -36,9 +37,11 @@ def normalize_cell(cell: dict) -> bool:
     if "solution" not in meta.get("tags", []):
         return False
     before = json.dumps(meta, sort_keys=True)
-    meta.setdefault("jupyter", {})["source_hidden"] = True
-    if "hide-input" not in meta["tags"]:
-        meta["tags"].append("hide-input")
+    # The output goes with the code: it would give the answer away.
+    meta.setdefault("jupyter", {}).update(source_hidden=True, outputs_hidden=True)
+    for tag in ("hide-input", "hide-output"):
+        if tag not in meta["tags"]:
+            meta["tags"].append(tag)
     meta.setdefault("mystnb", {}).update(code_prompt_show=SHOW, code_prompt_hide=HIDE)
     changed = json.dumps(meta, sort_keys=True) != before
     source = cell["source"] if isinstance(cell["source"], str) else "".join(cell["source"])

@@ -31,3 +31,34 @@ var splitQuery = function (query) {
     });
   return words;
 };
+
+// Latin terms: Sphinx's Chinese indexer keeps a short word whole when stemming
+// would cut it below three letters ("qos", "dds"), but the browser stems every
+// query word ("qos" -> "qo") and then finds nothing. Look a query word up in
+// the form the index holds it.
+(function () {
+  function wrapStemmer() {
+    if (typeof Stemmer === "undefined" || Stemmer.labkitWrapped) return;
+    var Base = Stemmer;
+    var has = Object.prototype.hasOwnProperty;
+    var Wrapped = function () {
+      var base = new Base();
+      this.stemWord = function (word) {
+        var stem = base.stemWord(word);
+        var index = (typeof Search !== "undefined" && Search._index) || null;
+        if (!index) return stem;
+        var knows = function (w) { return has.call(index.terms, w) || has.call(index.titleterms, w); };
+        // The indexer stems with Snowball, the browser with Porter: "rclpy" is
+        // "rclpi" in the index but stays "rclpy" here. Take the first form the
+        // index holds.
+        var forms = [stem, word, stem.replace(/y$/, "i"), word.replace(/y$/, "i")];
+        for (var i = 0; i < forms.length; i++) if (knows(forms[i])) return forms[i];
+        return stem;
+      };
+    };
+    Wrapped.labkitWrapped = true;
+    Stemmer = Wrapped;
+  }
+  wrapStemmer();
+  if (typeof document !== "undefined") document.addEventListener("DOMContentLoaded", wrapStemmer);
+})();
