@@ -8,7 +8,15 @@ os.environ.setdefault("LABKIT_TIME", "virtual")
 # start) stay in-process unless they ask (tests/dds sets LABKIT_DDS=on, a domain each)
 os.environ.setdefault("LABKIT_DDS", "off")
 
+import signal  # noqa: E402
+
 import pytest  # noqa: E402
+
+# A suite started in the background (`make test &`, some CI runners) inherits SIGINT
+# ignored, and so would every program it starts: the tests that press Ctrl+C on a
+# `labkit exec` program (as a terminal does) need SIGINT as an interactive shell has it.
+if signal.getsignal(signal.SIGINT) is signal.SIG_IGN:
+    signal.signal(signal.SIGINT, signal.default_int_handler)
 
 
 @pytest.fixture(autouse=True)

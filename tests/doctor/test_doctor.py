@@ -102,11 +102,18 @@ def test_format_report_padding_rule():
     assert format_report(long)[2] == "eightchr    : v"
 
 
-def test_domain_id_is_not_a_doctor_check(monkeypatch):
+def test_domain_id_is_not_a_doctor_check(monkeypatch, capsys):
     # Humble's ros2doctor never looks at ROS_DOMAIN_ID (its network check reads interfaces)
-    monkeypatch.setenv("ROS_DOMAIN_ID", "999")
+    monkeypatch.setenv("ROS_DOMAIN_ID", "101")
     result = labkit.ros2("doctor")
     assert result.stderr == "" and result.stdout == "\nAll 5 checks passed\n\n"
+    # but its own node needs a participant: on a domain Fast DDS cannot map to ports
+    # (> 232) Fast DDS prints its line and ends the process with status 1, checks unrun
+    capsys.readouterr()
+    monkeypatch.setenv("ROS_DOMAIN_ID", "999")
+    result = labkit.ros2("doctor")
+    assert result.returncode == 1 and "checks passed" not in result.stdout
+    assert "Calculated port number is too high" in capsys.readouterr().out
 
 
 API = "/opt/ros/humble/lib/python3.10/site-packages/ros2doctor/api"

@@ -140,6 +140,8 @@ def call_verb(verb, args, streams):
         return 1, None
     except KeyboardInterrupt:
         return 2, None
+    except SystemExit as e:  # the middleware ended the process (Fast DDS on a domain > 232)
+        return (e.code if isinstance(e.code, int) else 1), None
     except Exception as e:  # a labkit bug or a deadlock: one line, never a traceback
         name = type(e).__name__
         streams.eprint(f'ros2: {name}: {e}' if str(e) else f'ros2: {name}')
