@@ -5,6 +5,7 @@ virtual: "now" only moves when every known thread waits; threads run one at a ti
          holding the *baton*, and give it back only inside `wait()`.
 """
 import os
+import _thread
 import threading
 import time as _time
 
@@ -106,6 +107,33 @@ def _live_wait(predicate, timeout_ns):
 NEW, RUNNING, WAITING, DONE = "new", "running", "waiting", "done"
 
 
+class _Baton:
+    """threading.Event's set/wait/clear on one raw lock (held = not set): handing the
+    baton to a thread is one lock release, with none of Condition's Python-level
+    bookkeeping (the handover between a talker's and a listener's thread is on every
+    tick of virtual time). Set only by the baton's giver under world._lock, cleared only
+    by its own thread; a successful wait leaves the lock held until clear()."""
+    __slots__ = ("_lock", "_set")
+
+    def __init__(self):
+        self._lock = _thread.allocate_lock()
+        self._lock.acquire()
+        self._set = False
+
+    def set(self):
+        if not self._set:
+            self._set = True
+            self._lock.release()
+
+    def wait(self, timeout):
+        return self._lock.acquire(True, timeout)
+
+    def clear(self):
+        if self._set:
+            self._set = False
+            self._lock.acquire(False)
+
+
 class _Thread:
     __slots__ = ("thread", "state", "predicate", "deadline", "settle", "event",
                  "result", "deadlock", "order")
@@ -117,7 +145,7 @@ class _Thread:
         self.predicate = None
         self.deadline = None
         self.settle = False
-        self.event = threading.Event()
+        self.event = _Baton()
         self.result = False
         self.deadlock = False
 

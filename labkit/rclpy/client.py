@@ -6,7 +6,7 @@ import threading
 from labkit.graph import world
 from labkit.graph.registry import GRAPH
 from labkit.rclpy._entity import Handle, ReadyEntity
-from labkit.rclpy._msgs import copy_message
+from labkit.rclpy import _msgs
 from labkit.rclpy.service import RequestHeader, RequestId
 from labkit.rclpy.task import Future
 
@@ -37,7 +37,7 @@ class Client(ReadyEntity):
         if server is not None:         # like DDS: a request with no server is lost
             header = RequestHeader(RequestId(self._endpoint.gid, seq), self._reply,
                                    world.system_ns())
-            server.sink((copy_message(request), header))
+            server.sink((_msgs.copy_message(request), header))
         return seq
 
     def _reply(self, header, response):
@@ -51,8 +51,8 @@ class Client(ReadyEntity):
         return bool(self._responses)
 
     def _take(self):
-        from labkit.rclpy.subscription import _NOTHING
         if not self._responses:
+            from labkit.rclpy.subscription import _NOTHING
             return _NOTHING
         item = self._responses.popleft()
         if self._responses:

@@ -106,6 +106,12 @@ class Executor:
         self.wake()
         return task
 
+    def _add_callback_task(self, task):
+        """A future's done callback (labkit.rclpy.task._schedule), run as create_task's are."""
+        with self._tasks_lock:
+            self._tasks.append((task, None, None))
+        self.wake()
+
     def shutdown(self, timeout_sec=None):
         self._finalize_transient()
         with self._shutdown_lock:
@@ -292,8 +298,12 @@ class Executor:
         if not tasks:
             return None
         with self._tasks_lock:
-            self._tasks = [t for t in tasks if not t[0].done()]
-            for task, entity, node in reversed(self._tasks):
+            tasks = self._tasks
+            for t in tasks:
+                if t[0]._done:           # drop finished tasks (the list is short)
+                    tasks = self._tasks = [t for t in tasks if not t[0]._done]
+                    break
+            for task, entity, node in reversed(tasks):
                 if task._ready() and (node is None or node in self._nodes):
                     return task
         return None
@@ -596,6 +606,35 @@ class SingleThreadedExecutor(Executor):
 
     def spin_once_until_future_complete(self, future, timeout_sec=None):
         self._spin_once_impl(timeout_sec, future.done)
+
+    def spin_until_future_complete(self, future, timeout_sec=None):
+        """Executor.spin_until_future_complete, one unit of work per turn as there; work
+        that is ready now runs without the wait machinery (a service call is four turns:
+        the request, the response and the two done-callback tasks of the call before)."""
+        self._finalize_transient()
+        future.add_done_callback(lambda x: self.wake())
+        timed = timeout_sec is not None and timeout_sec >= 0
+        steady_ns = world.steady_ns
+        end = steady_ns() + _timeout_ns(timeout_sec) if timed else None
+        context = self._context
+        while context.ok() and not future._done and not self._is_shutdown:
+            if self._transient is not None:
+                self._finalize_transient()
+            work = self._next_work()
+            if work is None:
+                left = None
+                if timed:
+                    left = TimeoutObject((end - steady_ns()) / 1e9)
+                try:
+                    work = self._get_work(left, future.done)
+                except (ShutdownException, TimeoutException, ConditionReachedException):
+                    work = None
+            if work is not None:
+                handler = self._execute(work)
+                if handler is not None and handler._done and handler.exception() is not None:
+                    raise handler.exception()
+            if timed and steady_ns() >= end:
+                return
 
 
 class MultiThreadedExecutor(Executor):

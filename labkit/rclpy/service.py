@@ -3,7 +3,7 @@ from collections import deque
 import itertools
 
 from labkit.rclpy._entity import Handle, ReadyEntity
-from labkit.rclpy._msgs import copy_message
+from labkit.rclpy import _msgs
 
 
 class RequestId:
@@ -52,8 +52,8 @@ class Service(ReadyEntity):
         return bool(self._requests)
 
     def _take(self):
-        from labkit.rclpy.subscription import _NOTHING
         if not self._requests:
+            from labkit.rclpy.subscription import _NOTHING
             return _NOTHING
         item = self._requests.popleft()
         if self._requests:
@@ -69,7 +69,7 @@ class Service(ReadyEntity):
             raise TypeError('Expected {}, got {}'.format(self.srv_type.Response, type(response)))
         with self._handle:
             if header._reply is not None:
-                header._reply(header, copy_message(response))
+                header._reply(header, _msgs.copy_message(response))
 
     @property
     def handle(self):

@@ -2,6 +2,7 @@
 import inspect
 import sys
 import threading
+import types
 import warnings
 import weakref
 
@@ -80,7 +81,7 @@ class Future:
             self._callbacks = []
         if executor is not None:
             for callback in callbacks:
-                executor.create_task(callback, self)
+                _schedule(executor, callback, self)
         else:
             for callback in callbacks:
                 try:
@@ -99,13 +100,70 @@ class Future:
             if self._done:
                 executor = self._executor()
                 if executor is not None:
-                    executor.create_task(callback, self)
+                    _schedule(executor, callback, self)
                 else:
                     invoke = True
             else:
                 self._callbacks.append(callback)
         if invoke:
             callback(self)
+
+
+def _schedule(executor, callback, future):
+    """A done callback runs as a task of the executor, one turn of spin each, as in rclpy:
+    a plain function as a _CallbackTask (no coroutine, no lock: the executor claims it),
+    anything else as a Task."""
+    add = getattr(executor, '_add_callback_task', None)
+    if add is not None and not _is_coroutine_function(callback):
+        add(_CallbackTask(callback, future))
+    else:
+        executor.create_task(callback, future)
+
+
+class _CallbackTask:
+    """What the executor needs of a Task, for a done callback: called once, by the
+    executor that claimed it; its exception is raised out of spin as a Task's is."""
+    __slots__ = ('_callback', '_future', '_done', '_claimed', '_exception')
+
+    def __init__(self, callback, future):
+        self._callback = callback
+        self._future = future
+        self._done = False
+        self._claimed = False
+        self._exception = None
+
+    def __call__(self):
+        if self._done:
+            return
+        self._done = True
+        callback, future = self._callback, self._future
+        self._callback = self._future = None
+        try:
+            callback(future)
+        except Exception as e:
+            self._exception = e
+
+    def _ready(self):
+        return not (self._done or self._claimed)
+
+    def done(self):
+        return self._done
+
+    def executing(self):
+        return False
+
+    def exception(self):
+        return self._exception
+
+
+def _is_coroutine_function(handler):
+    """inspect.iscoroutinefunction, fast for plain functions and bound methods (the
+    executor's own done callbacks: one Task each per service call)."""
+    code = getattr(handler, '__code__', None)
+    if code is not None and code.__class__ is types.CodeType and \
+            getattr(handler, '_is_coroutine_marker', None) is None:
+        return bool(code.co_flags & inspect.CO_COROUTINE)
+    return inspect.iscoroutinefunction(handler)
 
 
 class Task(Future):
@@ -116,7 +174,7 @@ class Task(Future):
         self._handler = handler
         self._args = args if args is not None else ()
         self._kwargs = kwargs if kwargs is not None else {}
-        if inspect.iscoroutinefunction(handler):
+        if _is_coroutine_function(handler):
             self._handler = handler(*self._args, **self._kwargs)
             self._args = None
             self._kwargs = None
@@ -133,7 +191,7 @@ class Task(Future):
             if self._done:
                 return
             self._executing = True
-            if inspect.iscoroutine(self._handler):
+            if self._handler.__class__ is types.CoroutineType:
                 try:
                     awaited = self._handler.send(None)
                     self._waiting_on = awaited if isinstance(awaited, Future) else None
