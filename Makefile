@@ -54,5 +54,11 @@ lab:
 bench: setup
 	$(PYTHON) tools/make.py bench
 
+# On demand, not part of `make test`: tests/core, the no-cyclonedds test and ch02 through
+# nbval on Linux aarch64 (an arm64 Debian 12 root under qemu-user; root, ~5x slower Python)
+.PHONY: arm64
+arm64:
+	$(PYTHON) tools/qemu_arm64.py
+
 clean:
 	rm -rf book/_build .pytest_cache
