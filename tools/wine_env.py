@@ -191,9 +191,17 @@ def prepare(if_wine=False):
     return 0
 
 
+LINUX_ONLY_ENV = ('PYTHON', 'VIRTUAL_ENV', 'LABKIT_', 'AMENT_', 'COLCON_', 'ROS_', 'RMW_',
+                  'CMAKE_PREFIX_PATH', 'LD_LIBRARY_PATH', 'CYCLONEDDS_', 'FASTRTPS_',
+                  'FASTDDS_')
+
+
 def wine_environ(extra=None):
+    # nothing of the Linux side's Python, labkit or ROS set-up: a test run before this one
+    # may have left a sourced overlay (AMENT_PREFIX_PATH with ':' and Linux paths) in the
+    # environment, which the Windows notebooks would read as their own
     env = {k: v for k, v in os.environ.items()
-           if not k.startswith(('PYTHON', 'VIRTUAL_ENV', 'LABKIT_'))}
+           if not k.startswith(LINUX_ONLY_ENV)}
     env.update(WINEPREFIX=PREFIX, WINEDEBUG='-all', WINEARCH='win64',
                # no Gecko/Mono installers asked for (there is no network for them)
                WINEDLLOVERRIDES='mscoree,mshtml=',

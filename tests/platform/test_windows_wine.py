@@ -48,13 +48,6 @@ WINDOWS_NOTEBOOKS = ['book/part1_basics/ch02_nodes.ipynb',
                      'book/part3_tools/ch16_colcon.ipynb']
 # node id -> why it does not run under Windows
 WINDOWS_EXCLUDED = {
-    # Known gap (open in issue 17): under Wine, the AMENT_PREFIX_PATH these two pictures draw
-    # depends on the folder the repository is cloned into (one row/line fewer in a clone
-    # outside /work); every other cell of both notebooks runs and is compared under Windows
-    'book/part1_basics/ch08_workspaces_packages.ipynb::Cell 23':
-        'its AMENT_PREFIX_PATH picture under Wine depends on the clone folder (known gap)',
-    'book/part3_tools/ch16_colcon.ipynb::Cell 22':
-        'its prefix-lookup picture under Wine depends on the clone folder (known gap)',
     'tests/workspace/test_install_tree.py::test_local_setup_util_prints_the_commands_in_order':
         "runs install/_local_setup_util_sh.py with `python3` for a POSIX shell's `source`",
     'tests/workspace/test_colcon_build.py::test_symlink_install_runs_the_sources':
