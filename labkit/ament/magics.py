@@ -7,26 +7,32 @@ def _emit(result):
     emit(result)
 
 
+def _words(line):
+    """The line's words as bash splits them: quotes, and `#` starts a comment."""
+    from labkit import oslayer
+    return oslayer.split_args(line, comments=True)
+
+
 def colcon_magic(line):
     """%colcon build [options]: build the workspace in the current folder."""
     from labkit.ament.colcon import run_command
-    _emit(run_command(line))
+    _emit(run_command(_words(line)))
 
 
 def source_magic(line):
     """%source install/setup.bash: make a built workspace visible."""
     from labkit.ament.source import run
-    path = line.strip()
-    if not path:
+    words = _words(line)
+    if not words:
         print('bash: source: filename argument required', file=sys.stderr)
         return
-    run(path)
+    run(words[0])
 
 
 def rosdep_magic(line):
     """%rosdep install --from-paths src -y --ignore-src"""
     from labkit.ament.rosdep import run_command
-    _emit(run_command(line))
+    _emit(run_command(_words(line)))
 
 
 MAGICS = {'colcon': colcon_magic, 'source': source_magic, 'rosdep': rosdep_magic}
