@@ -35,3 +35,28 @@ def pytest_runtest_call(item):
     process = sys.modules.get("labkit.process")
     if process is not None:
         process.install_output_proxy()
+
+
+def _wine_module(session):
+    for item in session.items:
+        module = getattr(item, "module", None)      # notebook cells (nbval) have none
+        if module is not None and module.__name__.endswith("test_windows_wine"):
+            return module
+    return None
+
+
+def pytest_collection_finish(session):
+    # The Windows job (tests/platform/test_windows_wine.py, ~5 min under Wine) starts now,
+    # in the background on the second core, instead of when the suite reaches it.
+    module = _wine_module(session)
+    if module is not None and not session.config.option.collectonly:
+        module.start_windows_pytest()
+
+
+def pytest_sessionfinish(session):
+    module = sys.modules.get("test_windows_wine") or next(
+        (m for n, m in sys.modules.items() if n.endswith("test_windows_wine")), None)
+    job = getattr(module, "_JOB", None)
+    if job and job["proc"].poll() is None:     # the suite stopped before it was read
+        job["proc"].kill()
+        job["proc"].wait()

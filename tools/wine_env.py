@@ -205,7 +205,9 @@ def wine_environ(extra=None):
     env.update(WINEPREFIX=PREFIX, WINEDEBUG='-all', WINEARCH='win64',
                # no Gecko/Mono installers asked for (there is no network for them)
                WINEDLLOVERRIDES='mscoree,mshtml=',
-               PYTHONPATH=ROOT, PYTHONUTF8='0', PYTHONIOENCODING='utf-8',
+               # as Windows names it ('Z:\\...'): a bare '/path' is taken on the drive of the
+               # current folder, which a child started in C:\\...\\Temp does not share
+               PYTHONPATH='Z:' + ROOT.replace('/', '\\'), PYTHONUTF8='0', PYTHONIOENCODING='utf-8',
                PYTHONDONTWRITEBYTECODE='1')
     env.pop('DISPLAY', None)
     env.pop('WAYLAND_DISPLAY', None)

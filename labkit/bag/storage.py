@@ -332,7 +332,8 @@ class BagWriter:
         relative = f'{self.base}_{len(self.files)}{EXTENSIONS[self.storage_id]}'
         if self.storage_id == 'sqlite3':
             self.file = _SqliteFile(os.path.join(self.uri, relative))
-            storage_log(f"Opened database '{os.path.join(self.uri, relative)}' for READ_WRITE.")
+            storage_log(f"Opened database '{_shown(os.path.join(self.uri, relative))}' "
+                        "for READ_WRITE.")
         else:  # (Humble's mcap plugin logs no line when it opens a file)
             self.file = _McapFile(os.path.join(self.uri, relative))
         self.files.append(_FileStats(relative))
@@ -531,10 +532,16 @@ def _file_reader(path, storage_id, listed=False):
             raise BagError('No storage could be initialized from the inputs.') from None
         from labkit.rclpy.logging import get_logger
         log = get_logger('rosbag2_storage')
-        log.error(f"Could not open '{path}' with 'sqlite3'. Error: Failed to setup storage. "
+        log.error(f"Could not open '{_shown(path)}' with 'sqlite3'. Error: Failed to setup storage. "
                   f"Error: {_sqlite_what(e)}")
         log.error("Could not load/open plugin with storage id 'sqlite3'")
         raise BagError('No storage could be initialized. Abort') from None
+
+
+def _shown(path):
+    """A bag file's path as Humble on Ubuntu prints it ('/' on every OS, /root/...)."""
+    from labkit.ament import files
+    return files.display(path)
 
 
 # sqlite3_errstr() of the primary result codes a broken bag file gives
@@ -661,7 +668,7 @@ class BagReader:
         listed = os.path.isdir(uri) and os.path.exists(os.path.join(uri, METADATA_FILENAME))
         self.files = [_file_reader(p, self.storage_id, listed) for p in paths]
         if self.metadata.relative_file_paths and self.storage_id == 'sqlite3':
-            storage_log(f"Opened database '{paths[0]}' for READ_ONLY.")
+            storage_log(f"Opened database '{_shown(paths[0])}' for READ_ONLY.")
 
     def topics(self):
         return [t.topic_metadata for t in self.metadata.topics_with_message_count]

@@ -9,6 +9,7 @@ import labkit
 import labkit.interfaces as ifc
 from labkit.rclpy.serialization import deserialize_message
 
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 TWIST = '"{linear: {x: 2.0}, angular: {z: 1.8}}"'
 
 
@@ -221,7 +222,12 @@ def test_record_and_play_in_live_time(tmp_path):
     ''')
     done = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True,
                           timeout=60, cwd=tmp_path,
-                          env={'LABKIT_TIME': 'live', 'PATH': '/usr/bin:/bin', 'TZ': 'UTC'})
+                          env={'LABKIT_TIME': 'live', 'PATH': '/usr/bin:/bin', 'TZ': 'UTC',
+                               # labkit where it is not installed (Windows job), and Windows'
+                               # own variable its Python needs
+                               'PYTHONPATH': os.pathsep.join(
+                                   p for p in (REPO, os.environ.get('PYTHONPATH')) if p),
+                               **{k: os.environ[k] for k in ('SYSTEMROOT',) if k in os.environ}})
     assert done.returncode == 0, done.stderr
     topic_line, state = done.stdout.splitlines()
     assert topic_line.startswith('Topic information: Topic: /turtle1/pose | '

@@ -2,7 +2,6 @@
 `mcap` library with `mcap-ros2-support`, message for message; a SIGKILLed recording keeps
 its complete chunks and `ros2 bag reindex` repairs it."""
 import os
-import signal
 import subprocess
 import sys
 import textwrap
@@ -155,7 +154,7 @@ def test_sigkilled_recording_keeps_what_came_before_and_reindex_repairs_it(tmp_p
         # at 100 Hz: note how many were out at 2 s, kill 150 messages (1.5 s) later
         safe = next(n for n in counts if n >= 200)
         next(n for n in counts if n >= safe + 150)
-        proc.send_signal(signal.SIGKILL)
+        proc.kill()                      # SIGKILL (TerminateProcess on Windows)
         proc.wait(timeout=30)
     finally:
         if proc.poll() is None:

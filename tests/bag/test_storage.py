@@ -138,6 +138,13 @@ def test_file_sizes_like_rosbag2():
     assert format_file_size(5 * 1024 ** 3) == '5.0 GiB'
 
 
+def _child_env():
+    """labkit importable in the child, also where it is only on PYTHONPATH (Windows job)."""
+    repo = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+    return dict(os.environ, PYTHONPATH=os.pathsep.join(
+        p for p in (repo, os.environ.get('PYTHONPATH')) if p))
+
+
 def _killed_writer(n):
     """A kernel that dies mid-recording: no close, no destructor, no atexit."""
     return textwrap.dedent(f'''
@@ -163,7 +170,8 @@ def _committed(bag):
 
 
 def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
-    subprocess.run([sys.executable, '-c', _killed_writer(2500)], check=False, cwd=bag_dir)
+    subprocess.run([sys.executable, '-c', _killed_writer(2500)], check=False, cwd=bag_dir,
+                   env=_child_env())
     m = rosbag2_py.Info().read_metadata('crash', '')
     kept = _committed('crash')
     # whole batches (1000 messages or 0.2 s each) stay, in order; the half batch is gone
@@ -187,7 +195,8 @@ def test_a_killed_writer_leaves_a_readable_bag(bag_dir):
 
 
 def test_rosbags_reads_a_killed_writers_bag(bag_dir):
-    subprocess.run([sys.executable, '-c', _killed_writer(1500)], check=False, cwd=bag_dir)
+    subprocess.run([sys.executable, '-c', _killed_writer(1500)], check=False, cwd=bag_dir,
+                   env=_child_env())
     kept = _committed('crash')
     with Reader('crash') as reader:  # its metadata.yaml: from a refresh along the way
         got = [ifc.deserialize(d, String).data for _, _, d in reader.messages()]
@@ -203,7 +212,8 @@ def test_format_bag_metadata_without_topics():
 
 def test_reindex_rebuilds_metadata(bag_dir):
     import labkit
-    subprocess.run([sys.executable, '-c', _killed_writer(1200)], check=False, cwd=bag_dir)
+    subprocess.run([sys.executable, '-c', _killed_writer(1200)], check=False, cwd=bag_dir,
+                   env=_child_env())
     kept = _committed('crash')
     r = labkit.ros2('bag reindex crash')
     assert r.returncode == 0, r.stderr

@@ -15,7 +15,9 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 import textwrap
+import threading
 import time
 import xml.etree.ElementTree as ET
 
@@ -33,14 +35,12 @@ if wine_env.wine() is None:
                 'the Windows CPython job did not run', allow_module_level=True)
 
 # the unit tests that run on Windows (one process shares Wine's start and the imports).
-# Not here: tests/bag (104 s under Wine, a third of the job's budget; its killed-writer tests
-# use SIGKILL, and 10 of its 63 tests fail there: not yet looked into), tests/dds (real
-# rclpy: Linux-only wheels), tests/book, tests/viz, tests/robots, tests/vision,
-# tests/sims2d, tests/turtlesim, tests/facer_e2e, tests/conformance, tests/doctor (browsers,
-# real ROS references, long runs: the Linux suite covers them; time budget).
+# Not here: tests/dds (real rclpy: Linux-only wheels), tests/book, tests/viz, tests/robots,
+# tests/vision, tests/sims2d, tests/turtlesim, tests/facer_e2e, tests/conformance,
+# tests/doctor (browsers, real ROS references, long runs: the Linux suite covers them).
 WINDOWS_UNIT_TESTS = ['tests/core', 'tests/platform', 'tests/cli', 'tests/ament',
                       'tests/workspace', 'tests/params', 'tests/interfaces', 'tests/launch',
-                      'tests/tf2']
+                      'tests/tf2', 'tests/bag']
 WINDOWS_NOTEBOOKS = ['book/part1_basics/ch02_nodes.ipynb',
                      'book/part1_basics/ch04_services.ipynb',
                      'book/part1_basics/ch08_workspaces_packages.ipynb',
@@ -210,19 +210,55 @@ def test_dds_on_loopback_from_windows_to_linux(tmp_path):
     assert windows.returncode == 0, out[-2000:]
 
 
-@pytest.fixture(scope='module')
-def windows_pytest(tmp_path_factory):
-    """One Windows pytest over the unit tests and the notebooks; its JUnit report."""
-    _prepared()
-    report = tmp_path_factory.mktemp('wine') / 'report.xml'
+_JOB = {}
+
+
+def start_windows_pytest():
+    """Start the one Windows pytest (unit tests and notebooks) in the background, once:
+    tests/conftest.py calls this as soon as collection has found this module, so Wine
+    runs on the second core while the Linux suite goes on; windows_pytest waits for it."""
+    if _JOB or not wine_env.ready():
+        return
+    scratch = tempfile.mkdtemp(prefix='labkit_wine_job_')
+    report = os.path.join(scratch, 'report.xml')
     args = ['-m', 'pytest', '-q', '-p', 'no:cacheprovider', '-p', 'no:xdist',
-            f'--junit-xml={_windows_path(str(report))}',
-            *WINDOWS_UNIT_TESTS, *WINDOWS_NOTEBOOKS]
+            f'--junit-xml={_windows_path(report)}', *WINDOWS_UNIT_TESTS, *WINDOWS_NOTEBOOKS]
     for node in WINDOWS_EXCLUDED:
         args += ['--deselect', node]
-    code, out, seconds = _run_windows(args, timeout=1500)
+    # through a pipe, drained by a thread: Python's stdout redirected to a file dies in Wine
+    proc = subprocess.Popen(wine_env.command(args), env=wine_env.wine_environ(None),
+                            cwd=ROOT, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT)
+    chunks = []
+    reader = threading.Thread(target=lambda: chunks.extend(iter(lambda: proc.stdout.read(65536), b'')),
+                              name='wine-job-output', daemon=True)
+    reader.start()
+    _JOB.update(report=report, chunks=chunks, reader=reader, scratch=scratch,
+                started=time.monotonic(), proc=proc)
+
+
+def _finish_windows_pytest(timeout):
+    proc = _JOB['proc']
+    try:
+        code = proc.wait(timeout=max(1.0, timeout - (time.monotonic() - _JOB['started'])))
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        code = proc.wait()
+    seconds = time.monotonic() - _JOB['started']
+    _JOB['reader'].join(timeout=30)
+    out = b''.join(_JOB['chunks']).decode('utf-8', errors='replace')
+    return code, out, seconds
+
+
+@pytest.fixture(scope='module')
+def windows_pytest():
+    """The Windows pytest over the unit tests and the notebooks; its JUnit report."""
+    _prepared()
+    start_windows_pytest()
+    code, out, seconds = _finish_windows_pytest(timeout=1500)
+    report = _JOB['report']
     cases = []
-    if report.exists():
+    if os.path.exists(report):
         for case in ET.parse(report).getroot().iter('testcase'):
             outcome, why = 'passed', ''
             for tag in ('failure', 'error', 'skipped'):
@@ -232,8 +268,6 @@ def windows_pytest(tmp_path_factory):
                     why = (found.get('message') or '').splitlines()[:1]
             cases.append((case.get('file') or case.get('classname', ''), case.get('name'),
                           outcome, ''.join(why)[:200]))
-    # the whole Windows output, for a look after a failure
-    (report.parent / 'windows_pytest.log').write_text(text_or(out), encoding='utf-8')
     summary = [line for line in out.splitlines() if ' in ' in line and 'passed' in line]
     return {'code': code, 'out': out, 'cases': cases, 'seconds': seconds,
             'summary': summary[-1] if summary else ''}
