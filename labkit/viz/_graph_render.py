@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import re
 import sys
 import threading
 import unicodedata
@@ -427,3 +428,17 @@ def inline_svg(svg: str) -> str:
     """The <svg> element alone, for embedding in HTML (no XML prolog)."""
     start = svg.find("<svg")
     return svg[start:] if start >= 0 else svg
+
+
+def fit_svg(svg: str) -> str:
+    """The <svg> element for HTML that must fit its container: drawn at its own size
+    when there is room, scaled down (aspect kept by the viewBox) when there is not."""
+    element = inline_svg(svg)
+    head_end = element.find(">")
+    head = element[:head_end]
+    m = re.search(r' width="([0-9.]+)pt" height="([0-9.]+)pt"', head)
+    if m is None:
+        return element
+    style = (f' style="display:block;width:100%;max-width:{m.group(1)}pt;height:auto"'
+             ' preserveAspectRatio="xMinYMin meet"')
+    return element[:m.start()] + style + element[m.end():]

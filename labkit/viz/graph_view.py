@@ -13,9 +13,16 @@ Graphviz `dot`: nodes as ellipses, topics as boxes, namespaces as clusters,
 debug entities, dead sinks and leaf topics hidden by default, topics whose
 publisher and subscription QoS cannot match drawn red.
 
-In live time mode the widget follows the graph: a background thread polls the
-graph's change counter every 0.5 s and lays out again only when the graph
-really changed. In virtual time the picture is the graph as it is when drawn.
+A picture placed in the text is a snapshot, as a screenshot of rqt_graph
+would be: `GraphView()` as a cell's last line, or `.show()`, draws the graph as
+it is at that moment and stores only that picture (the same face in JupyterLab,
+after save and reload, and in the HTML book), so it keeps showing what the text
+beside it describes after the chapter has started other nodes. A view that
+follows the graph is asked for: `GraphView(live=True)` or `.show(live=True)`
+(and `ros2 run rqt_graph rqt_graph`) give a widget that scales to its cell's
+width; in live time a background thread polls the graph's change counter every
+0.5 s and lays out again only when the graph really changed. In virtual time
+nothing changes between cells by itself, so it stays the graph as drawn.
 """
 from __future__ import annotations
 
@@ -24,7 +31,7 @@ import weakref
 
 from labkit.viz._graph_filter import ViewGraph, ViewOptions, build_view
 from labkit.viz._graph_model import GraphSnapshot, join_name, query_snapshot
-from labkit.viz._graph_render import inline_svg, render_svg
+from labkit.viz._graph_render import fit_svg, render_svg
 
 __all__ = ["GraphView", "GraphSnapshot", "concept_figure", "stop_all"]
 
@@ -130,8 +137,10 @@ def _live_mode():
 # ------------------------------------------------------------ the view
 
 def _html(svg: str) -> str:
-    """The widget's HTML: the inline SVG, scrollable when the graph is large."""
-    return f'<div style="overflow:auto;max-width:100%">{inline_svg(svg)}</div>'
+    """The live widget's HTML: the inline SVG scaled down to the cell's width (never up
+    past its own size), the aspect kept by its viewBox, so nothing is cut at the right."""
+    return ('<div class="labkit-graph-fit" style="width:100%;max-width:100%;overflow:hidden">'
+            f'{fit_svg(svg)}</div>')
 
 
 _LIVE_VIEWS = weakref.WeakSet()
@@ -153,13 +162,14 @@ class GraphView:
                  hide_debug: bool = True, *, hide_dead_sinks: bool = True,
                  hide_leaf_topics: bool = True, hide_tf: bool = False, group_tf: bool = True,
                  cluster_level: int = 2, nodes_only: bool = False, rankdir: str = "auto",
-                 snapshot: GraphSnapshot | dict | None = None):
+                 snapshot: GraphSnapshot | dict | None = None, live: bool = False):
         self.options = ViewOptions(services=services, actions=actions, hide_debug=hide_debug,
                                    hide_dead_sinks=hide_dead_sinks,
                                    hide_leaf_topics=hide_leaf_topics, hide_tf=hide_tf,
                                    group_tf=group_tf, cluster_level=cluster_level,
                                    nodes_only=nodes_only)
         self.rankdir = rankdir
+        self.follow = bool(live)     # what show() does by default: snapshot or live view
         if isinstance(snapshot, dict):
             snapshot = GraphSnapshot.from_dict(snapshot)
         self._fixed = snapshot
@@ -223,21 +233,32 @@ class GraphView:
         return svg != before
 
     def show(self, live: bool | None = None):
-        """Display the live widget and the static SVG in one output.
+        """Display the graph as it is now.
 
-        live=None follows the time mode: the widget follows the graph in live
-        mode only (in virtual time nothing changes between cells by itself).
+        By default (live=None takes the `live` given to the constructor, False
+        unless asked) this is a snapshot: one static SVG, the picture a reader
+        sees beside the text in JupyterLab, after reload and in the HTML book,
+        whatever starts later. live=True displays a widget that scales to the
+        cell's width together with the same SVG as its static face; in live
+        time the widget then follows the graph (in virtual time nothing
+        changes between cells by itself, so it is not polled).
         """
         from labkit.viz.display import show
-        self.refresh()
-        snapshot, svg = self._last
-        vertices = len(build_view(snapshot, self.options).vertices)
-        show(self.widget(), svg=svg, text=f"<GraphView: {vertices} vertices>")
-        if (live if live is not None else _live_mode()) and self._fixed is None:
+        follow = self.follow if live is None else bool(live)
+        snapshot = self.snapshot()
+        svg = self._draw(snapshot)
+        text = f"<GraphView: {len(build_view(snapshot, self.options).vertices)} vertices>"
+        if not follow:
+            show(svg=svg, text=text)
+            return
+        if self._widget is not None and self._widget.value != _html(svg):
+            self._widget.value = _html(svg)
+        show(self.widget(), svg=svg, text=text)
+        if _live_mode() and self._fixed is None:
             self.start()
 
     def _ipython_display_(self):
-        # `GraphView()` as a cell's last line shows both faces, like show()
+        # `GraphView()` as a cell's last line: a snapshot (`GraphView(live=True)`: live view)
         self.show()
 
     # -- live following
@@ -320,7 +341,7 @@ def main(args=None):
     except ImportError:
         shell = None
     if shell is not None and getattr(shell, "kernel", None) is not None:
-        view.show()               # follows the graph in live time
+        view.show(live=True)      # rqt_graph's window: follows the graph in live time
     elif _live_mode():
         view.start()
     try:
