@@ -8,9 +8,25 @@ def _emit(result):
 
 
 def _words(line):
-    """The line's words as bash splits them: quotes, and `#` starts a comment."""
+    """The line's words as bash splits them: quotes, and a `#` that begins a word starts
+    a comment (`a#b` and `"# x"` are kept, as bash keeps them)."""
     from labkit import oslayer
-    return oslayer.split_args(line, comments=True)
+    quote, escaped, blank = None, False, True     # blank: the next character begins a word
+    for i, ch in enumerate(line):
+        if escaped:
+            escaped, blank = False, False
+        elif ch == '\\' and quote != "'" and not oslayer.WINDOWS:
+            escaped = True
+        elif quote:
+            quote = None if ch == quote else quote
+        elif ch in '"\'':
+            quote, blank = ch, False
+        elif ch == '#' and blank:
+            line = line[:i]
+            break
+        else:
+            blank = ch.isspace()
+    return oslayer.split_args(line)
 
 
 def colcon_magic(line):

@@ -20,3 +20,12 @@ def test_source_with_only_a_comment_names_the_missing_file(facer, capsys):
     from labkit.cli import magics
     magics.MAGICS['source']('   # nothing but a comment')
     assert capsys.readouterr().err == 'bash: source: filename argument required\n'
+
+
+def test_only_a_hash_that_begins_a_word_starts_the_comment():
+    from labkit.ament.magics import _words
+    assert _words('build --cmake-args -DX=a#b') == ['build', '--cmake-args', '-DX=a#b']
+    assert _words('build "a # b" # c') == ['build', 'a # b']
+    assert _words("build 'x#' #c") == ['build', 'x#']
+    assert _words('build\t#tab') == ['build']
+    assert _words('# all of it') == []
