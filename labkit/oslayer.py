@@ -53,15 +53,38 @@ def split_args(text, *, windows=None, punctuation_chars=False, comments=False):
 
     POSIX shells (Linux, macOS): shlex's POSIX rules (quotes, backslash escapes).
     Windows (`windows=True`, the default there): the same quoting, but a backslash is
-    kept as it is typed (it separates path parts). `punctuation_chars` and `comments`
-    are shlex's (a `>` redirection; `#` starts a comment)."""
+    kept as it is typed (it separates path parts). `punctuation_chars` is shlex's (a `>`
+    redirection); with `comments`, a `#` that begins a word starts a comment, as in
+    bash (`a#b` and a quoted `#` are kept)."""
     windows = WINDOWS if windows is None else windows
+    if comments:
+        text = strip_comment(text, windows=windows)
     lexer = shlex.shlex(text, posix=True, punctuation_chars=punctuation_chars)
     lexer.whitespace_split = True
-    lexer.commenters = '#' if comments else ''
+    lexer.commenters = ''
     if windows:
         lexer.escape = ''
     return list(lexer)
+
+
+def strip_comment(line, *, windows=None):
+    """The line up to a bash comment: a `#` outside quotes that begins a word."""
+    windows = WINDOWS if windows is None else windows
+    quote, escaped, blank = None, False, True     # blank: the next character begins a word
+    for i, ch in enumerate(line):
+        if escaped:
+            escaped, blank = False, False
+        elif ch == '\\' and quote != "'" and not windows:
+            escaped = True
+        elif quote:
+            quote = None if ch == quote else quote
+        elif ch in '"\'':
+            quote, blank = ch, False
+        elif ch == '#' and blank:
+            return line[:i]
+        else:
+            blank = ch.isspace()
+    return line
 
 
 def quote_arg(arg):

@@ -11,22 +11,7 @@ def _words(line):
     """The line's words as bash splits them: quotes, and a `#` that begins a word starts
     a comment (`a#b` and `"# x"` are kept, as bash keeps them)."""
     from labkit import oslayer
-    quote, escaped, blank = None, False, True     # blank: the next character begins a word
-    for i, ch in enumerate(line):
-        if escaped:
-            escaped, blank = False, False
-        elif ch == '\\' and quote != "'" and not oslayer.WINDOWS:
-            escaped = True
-        elif quote:
-            quote = None if ch == quote else quote
-        elif ch in '"\'':
-            quote, blank = ch, False
-        elif ch == '#' and blank:
-            line = line[:i]
-            break
-        else:
-            blank = ch.isspace()
-    return oslayer.split_args(line)
+    return oslayer.split_args(line, comments=True)
 
 
 def colcon_magic(line):

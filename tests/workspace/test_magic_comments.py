@@ -29,3 +29,11 @@ def test_only_a_hash_that_begins_a_word_starts_the_comment():
     assert _words("build 'x#' #c") == ['build', 'x#']
     assert _words('build\t#tab') == ['build']
     assert _words('# all of it') == []
+
+
+def test_ros2_magic_keeps_a_hash_inside_a_word():
+    from labkit.cli.magics import split_redirect
+    assert split_redirect('topic pub /t std_msgs/msg/String "data: a#b" --once # note') == \
+        (['topic', 'pub', '/t', 'std_msgs/msg/String', 'data: a#b', '--once'], None, None)
+    assert split_redirect('param set /n name a#b > out.txt  # keep a#b') == \
+        (['param', 'set', '/n', 'name', 'a#b'], 'out.txt', 'w')
