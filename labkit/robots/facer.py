@@ -46,7 +46,6 @@ def drive_view(seconds=12.0, fps=10):
     from labkit.robots.urdf import pose_matrix
     from labkit.viz.meshcat_view import RobotView
     view = RobotView(model_path(), frame_scale=0.08)
-    view.reach = 1.5               # the 1.2 m circle, with the floor grid in sight
     frames = []
     for k in range(int(seconds * fps)):
         t = k / fps

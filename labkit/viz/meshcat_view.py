@@ -186,18 +186,176 @@ def _triad(scale):
     return _object(geometry, material, kind="LineSegments")
 
 
+_LABEL_CANVAS, _LABEL_FONT = 256, 48      # meshcat's _text texture: 256 px square, 48 px font
+
+
 def _label(text, size):
-    """The frame's name on a sprite (always faces the camera), like RViz's TF names."""
-    texture = {"uuid": _uuid(), "type": "_text", "text": text, "font_size": 48,
-               "font_face": "sans-serif"}
-    material = {"uuid": _uuid(), "type": "SpriteMaterial", "map": texture["uuid"],
-                "transparent": True, "depthTest": False}
+    """The frame's name on a sprite `size` metres square (always faces the camera), like
+    RViz's TF names. Ids come from the name: the same scene gives the same page."""
+    texture = {"uuid": f"labkit-name-{text}-texture", "type": "_text", "text": text,
+               "font_size": _LABEL_FONT, "font_face": "sans-serif"}
+    material = {"uuid": f"labkit-name-{text}-material", "type": "SpriteMaterial",
+                "map": texture["uuid"], "transparent": True, "depthTest": False}
     m = np.diag([size, size, size, 1.0])
-    m[2, 3] = size * 0.15
     return {"metadata": {"version": 4.5, "type": "Object"}, "geometries": [],
             "materials": [material], "textures": [texture], "images": [],
-            "object": {"uuid": _uuid(), "type": "Sprite", "material": material["uuid"],
+            "object": {"uuid": f"labkit-name-{text}", "type": "Sprite",
+                       "material": material["uuid"],
                        "matrix": [float(v) for v in m.T.flatten()]}}
+
+
+def _corners(shape, geometry):
+    """The 8 corners of a visual's box in the geometry's own frame (before `extra`), or None."""
+    kind = geometry.get("type")
+    if kind == "BoxGeometry":
+        half = np.array([geometry["width"], geometry["height"], geometry["depth"]]) / 2
+    elif kind == "CylinderGeometry":
+        r = geometry["radiusTop"]
+        half = np.array([r, geometry["height"] / 2, r])
+    elif kind == "SphereGeometry":
+        half = np.full(3, geometry["radius"])
+    elif kind == "_meshfile_geometry":
+        points = _mesh_points(geometry["format"], geometry["data"])
+        if points is None or not len(points):
+            return None
+        lo, hi = points.min(0), points.max(0)
+        return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                         for z in (lo[2], hi[2])])
+    else:
+        return None
+    return np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * half
+
+
+_FLOATS = re.compile(r"<float_array[^>]*>([^<]*)<")
+_OBJ_VERTEX = re.compile(r"^v\s+(\S+)\s+(\S+)\s+(\S+)", re.M)
+
+
+def _mesh_points(fmt, data):
+    """Vertices of a mesh file (binary STL, COLLADA position arrays, OBJ), for its extent."""
+    try:
+        if fmt == "stl":
+            raw = bytes(data.data)
+            count = struct.unpack_from("<I", raw, 80)[0]
+            records = np.frombuffer(raw[84:84 + 50 * count], dtype=np.dtype(
+                [("v", "<f4", (12,)), ("a", "<u2")]))
+            return records["v"][:, 3:].reshape(-1, 3).astype(float)
+        if fmt == "dae":
+            arrays = [np.array(a.split(), float) for a in _FLOATS.findall(data)]
+            arrays = [a.reshape(-1, 3) for a in arrays if len(a) and len(a) % 3 == 0]
+            return np.vstack(arrays[:1]) if arrays else None     # the first: positions
+        if fmt == "obj":
+            return np.array(_OBJ_VERTEX.findall(data), float)
+    except (ValueError, struct.error):
+        return None
+    return None
+
+
+# ---------------------------------------------------------------- the camera
+FOV_DEG = 75.0             # meshcat's camera (vertical field of view)
+VIEW_PX = (688, 420)       # the view the camera is framed for: the book's column, 420 px high
+FILL = 0.72                # the model's box takes up to this share of the view's half-sizes
+ELEVATION_DEG = 32.0       # seen from above, at RViz's kind of angle
+AZIMUTH_DEG = -50.0        # from the front right, as the chapter's static pictures
+LABEL_PX = 14.0            # a frame name's font size on screen
+
+
+class Camera:
+    """Where the view looks from: framed from the scene's bounding box (`lo`, `hi`, metres,
+    Z up), looking at its centre from above, as near as keeps the box's corners (or the
+    scene's own `points`, when given: a round path does not reach its box's corners)
+    within FILL of the view. `project()` gives view pixels (x right,
+    y down) and depth; `unproject()` is its inverse at a depth."""
+
+    def __init__(self, lo, hi, width=VIEW_PX[0], height=VIEW_PX[1], points=None):
+        self.width, self.height = width, height
+        self.centre = (np.asarray(lo, float) + np.asarray(hi, float)) / 2
+        el, az = np.radians(ELEVATION_DEG), np.radians(AZIMUTH_DEG)
+        self.back = np.array([np.cos(el) * np.cos(az), np.cos(el) * np.sin(az), np.sin(el)])
+        self.forward = -self.back
+        self.right = np.cross(self.forward, [0.0, 0.0, 1.0])
+        self.right /= np.linalg.norm(self.right)
+        self.up = np.cross(self.right, self.forward)
+        self.tan_v = np.tan(np.radians(FOV_DEG) / 2)
+        self.tan_h = self.tan_v * width / height
+        if points is None:
+            points = [[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                      for z in (lo[2], hi[2])]
+        q = np.asarray(points, float).reshape(-1, 3) - self.centre
+        # the nearest distance at which every point is inside FILL of the view
+        shift = q @ self.forward
+        need = np.concatenate([np.abs(q @ self.right) / (FILL * self.tan_h) - shift,
+                               np.abs(q @ self.up) / (FILL * self.tan_v) - shift, [0.3]])
+        self.distance = float(need.max())
+        self.position = self.centre + self.distance * self.back
+
+    def project(self, point):
+        q = np.asarray(point, float) - self.position
+        depth = q @ self.forward
+        x = (q @ self.right) / (depth * self.tan_h)
+        y = (q @ self.up) / (depth * self.tan_v)
+        return (x + 1) / 2 * self.width, (1 - y) / 2 * self.height, depth
+
+    def unproject(self, px, py, depth):
+        x, y = 2 * px / self.width - 1, 1 - 2 * py / self.height
+        return self.position + depth * (self.forward + x * self.tan_h * self.right
+                                        + y * self.tan_v * self.up)
+
+    def metres_per_px(self, depth):
+        return 2 * depth * self.tan_v / self.height
+
+    def commands(self):
+        """The scene moved so that its centre is meshcat's orbit target (the origin), the
+        floor grid with it, and meshcat's camera (Y up under the scene's turn) set back."""
+        shift = np.eye(4)
+        shift[:3, 3] = -self.centre
+        back = self.distance * self.back
+        return [RobotView._set_transform(ROOT, shift),
+                RobotView._set_transform("/Grid", shift),
+                RobotView._set_transform("/Axes", shift),
+                {"type": "set_property", "path": "/Cameras/default/rotated/<object>",
+                 "property": "position",
+                 "value": [float(back[0]), float(back[2]), float(-back[1])]}]
+
+
+def _text_box(text, font_px):
+    """(width, height) in px of a name drawn at `font_px` (sans-serif, as meshcat's _text)."""
+    wide = sum(1.0 if ord(ch) > 0x2E80 else (0.62 if ch.isupper() or ch in "mwMW_" else 0.56)
+               for ch in text)
+    return max(wide * font_px, font_px), 1.25 * font_px
+
+
+def place_labels(anchors, camera, fonts=None):
+    """{name: (x, y, w, h)} screen boxes (px, top-left) for frame names at their anchors
+    ({name: (px, py)}), beside the anchor and never on top of each other (nor off the view
+    where there is room): tried right-above, left-above, right-below, left-below, then
+    further up and down."""
+    placed = {}
+    gap = 4.0
+    for name in sorted(anchors, key=lambda n: (anchors[n][1], anchors[n][0], n)):
+        ax, ay = anchors[name]
+        w, h = _text_box(name, (fonts or {}).get(name, LABEL_PX))
+        tries = []
+        for step in range(0, 12):
+            for dy in (-(h + gap) - step * (h + 1), gap + step * (h + 1)):
+                for x in (ax + gap, ax - gap - w):
+                    tries.append((x, ay + dy))
+        best = None
+        for x, y in tries:
+            box = (x, y, w, h)
+            inside = 0 <= x and x + w <= camera.width and 0 <= y and y + h <= camera.height
+            free = all(not _overlap(box, other) for other in placed.values())
+            if free and inside:
+                best = box
+                break
+            if free and best is None:
+                best = box
+        placed[name] = best
+    return placed
+
+
+def _overlap(a, b, margin=1.0):
+    return (a[0] < b[0] + b[2] + margin and b[0] < a[0] + a[2] + margin
+            and a[1] < b[1] + b[3] + margin and b[1] < a[1] + a[3] + margin)
 
 
 # ---------------------------------------------------------------- the view
@@ -210,13 +368,16 @@ class RobotView:
     def __init__(self, model=None, *, frames=True, frame_scale=0.15, height=420,
                  fixed_frame=None):
         self.height = height
-        self.reach = None         # metres the camera must take in (None: the robot's size)
+        self.reach = None         # metres around the scene's centre the camera must take in (None: its box)
         self.show_frames = frames
         self.frame_scale = frame_scale
         self.fixed_frame = fixed_frame
         self._objects = {}        # path -> set_object command
         self._transforms = {}     # path -> 4x4
-        self._animation = None
+        self._animation = None    # (key frames, fps, repetitions)
+        self._extents = {}        # link -> corners of its visuals in the link's frame
+        self._view_camera = None  # the camera of the scene a page got last (names follow it)
+        self._label_sent = {}     # frame -> where its name was sent (frame coordinates)
         self._lock = threading.Lock()
         self._listeners = []      # live pages (server queues)
         self.model = None
@@ -235,6 +396,7 @@ class RobotView:
             model = robots.load(model)
         with self._lock:
             self._objects = {p: o for p, o in self._objects.items() if not p.startswith(ROBOT)}
+            self._extents = {}
             self.model = model
             base_dir = os.path.dirname(model.filename) if model.filename else None
             for link_name, link in model.links.items():
@@ -250,6 +412,10 @@ class RobotView:
                     if rgba is None:        # RViz draws a link without material white/grey
                         rgba = (0.8, 0.8, 0.8, 1.0)
                     path = f"{ROBOT}/{link_name}/visual_{i}"
+                    corners = _corners(visual.geometry, geometry)
+                    if corners is not None:
+                        self._extents.setdefault(link_name, []).append(
+                            (m @ np.c_[corners, np.ones(len(corners))].T).T[:, :3])
                     self._objects[path] = self._set_object(path, _object(geometry,
                                                                          _material(rgba), m))
             if self.show_frames:
@@ -263,20 +429,105 @@ class RobotView:
             return
         self._objects[path + "/triad"] = self._set_object(path + "/triad",
                                                           _triad(self.frame_scale))
-        if not getattr(self, "_no_labels", False):
-            self._objects[path + "/label"] = self._set_object(
-                path + "/label", _label(name, self.frame_scale * 2.0))
 
     def hide_labels(self):
         """Frames keep their axes but lose their names (RViz's TF "Show Names" off):
         a small robot's names pile up on each other. Returns the view."""
         with self._lock:
             self._no_labels = True
-            gone = [p for p in self._objects if p.startswith(FRAMES) and p.endswith("/label")]
-            for p in gone:
-                del self._objects[p]
+            gone = [f"{FRAMES}/{name}/label" for name in self._label_sent]
+            self._label_sent = {}
         self._push([{"type": "delete", "path": p} for p in gone])
         return self
+
+    # -- framing and names ---------------------------------------------------------
+    def _frame_names(self):
+        return [p[len(FRAMES) + 1:-len("/triad")] for p in self._objects
+                if p.startswith(FRAMES + "/") and p.endswith("/triad")]
+
+    def _poses_now(self):
+        """{frame or link: 4x4} as the scene shows them now."""
+        poses = {}
+        for path, m in self._transforms.items():
+            for prefix in (ROBOT + "/", FRAMES + "/"):
+                if path.startswith(prefix):
+                    poses[path[len(prefix):]] = m
+        return poses
+
+    def bounds(self):
+        """(lo, hi): the box (metres, fixed frame) around everything the scene shows, over
+        its current poses and every key frame of its animation."""
+        return self._extent()[:2]
+
+    def _extent(self):
+        """(lo, hi, points): the box and the points it holds (None: the box only)."""
+        sets = [self._poses_now()] + list(self._animation[0] if self._animation else [])
+        points = []
+        frames = set(self._frame_names()) if self.show_frames else set()
+        for poses in sets:
+            for name, m in poses.items():
+                m = np.asarray(m, float)
+                for corners in self._extents.get(name, ()):
+                    points.append((m[:3, :3] @ corners.T).T + m[:3, 3])
+                if name in frames:
+                    points.append(m[:3, 3] + np.vstack([np.zeros(3), self.frame_scale
+                                                        * m[:3, :3].T]))
+        if not points:
+            return np.array([-1.0, -1.0, 0.0]), np.array([1.0, 1.0, 0.5]), None
+        allp = np.vstack(points)
+        lo, hi = allp.min(0), allp.max(0)
+        if self.reach:
+            centre = (lo + hi) / 2
+            lo, hi = np.minimum(lo, centre - self.reach), np.maximum(hi, centre + self.reach)
+            return lo, hi, None
+        return lo, hi, allp
+
+    def camera(self):
+        """The camera a page of this scene starts with (framed from `bounds()`)."""
+        lo, hi, points = self._extent()
+        return Camera(lo, hi, points=points)
+
+    def _label_size(self, camera):
+        return _LABEL_CANVAS / _LABEL_FONT * LABEL_PX * camera.metres_per_px(camera.distance)
+
+    def label_boxes(self, poses=None, camera=None):
+        """{frame: (x, y, w, h)} where each frame's name lands in the view (px)."""
+        camera = camera or self._view_camera or self.camera()
+        poses = self._poses_now() if poses is None else poses
+        names = [n for n in self._frame_names() if n in poses]
+        anchors, fonts = {}, {}
+        for name in names:
+            x, y, depth = camera.project(np.asarray(poses[name])[:3, 3])
+            if depth <= 0:
+                continue
+            anchors[name] = (x, y)
+            fonts[name] = LABEL_PX * camera.distance / depth
+        return place_labels(anchors, camera, fonts)
+
+    def _label_commands(self, poses, camera, create):
+        """set_object (when `create`) and set_transform of every name that moved."""
+        if not self.show_frames or getattr(self, "_no_labels", False):
+            return []
+        out = []
+        size = self._label_size(camera)
+        for name, (x, y, w, h) in self.label_boxes(poses, camera).items():
+            pose = np.asarray(poses[name], float)
+            _, _, depth = camera.project(pose[:3, 3])
+            font = LABEL_PX * camera.distance / depth
+            # the text's box sits above the sprite's centre (it is drawn on a baseline there)
+            world = camera.unproject(x + w / 2, y + h / 2 + 0.27 * font, depth)
+            local = np.linalg.solve(pose, np.append(world, 1.0))[:3]
+            path = f"{FRAMES}/{name}/label"
+            key = tuple(np.round(local, 5))
+            if create or name not in self._label_sent:
+                out.append(self._set_object(path, _label(name, size)))
+            elif self._label_sent[name] == key:
+                continue
+            self._label_sent[name] = key
+            shift = np.eye(4)
+            shift[:3, 3] = local
+            out.append(self._set_transform(path, shift))
+        return out
 
     @staticmethod
     def _set_object(path, obj):
@@ -291,7 +542,11 @@ class RobotView:
                 if self.show_frames:
                     self._add_frame(name)
                     self._transforms[f"{FRAMES}/{name}"] = matrix
-        self._push([self._set_transform(p, m) for p, m in self._current(poses)])
+        commands = [self._set_transform(p, m) for p, m in self._current(poses)]
+        with self._lock:
+            if self._view_camera is not None:
+                commands += self._label_commands(self._poses_now(), self._view_camera, False)
+        self._push(commands)
 
     def _current(self, poses):
         for name, matrix in poses.items():
@@ -314,32 +569,46 @@ class RobotView:
 
     def animate(self, frames, fps=10, repetitions=1000):
         """A meshcat animation from a list of {frame: 4x4} (one per key frame)."""
+        self._animation = (list(frames), fps, repetitions)
+        if frames:
+            self.set_frame_poses(frames[0])
+
+    def _animation_command(self, camera):
+        from labkit.robots.urdf import quaternion_from_matrix
+        frames, fps, repetitions = self._animation
         tracks = {}
+        saved = dict(self._label_sent)
         for k, poses in enumerate(frames):
-            for path, m in self._current(poses):
-                from labkit.robots.urdf import quaternion_from_matrix
+            moves = [(p, m) for p, m in self._current(poses)]
+            for command in self._label_commands(poses, camera, True):
+                if command["type"] == "set_transform":
+                    moves.append((command["path"], np.array(command["matrix"]).reshape(4, 4).T))
+            for path, m in moves:
                 q = quaternion_from_matrix(m[:3, :3])
                 entry = tracks.setdefault(path, ([], []))
                 entry[0].append({"time": k, "value": [float(v) for v in m[:3, 3]]})
                 entry[1].append({"time": k, "value": list(q)})
-        self._animation = {"type": "set_animation", "path": "",
-                           "options": {"play": True, "repetitions": repetitions},
-                           "animations": [{"path": path, "clip": {
-                               "fps": fps, "name": "default", "tracks": [
-                                   {"name": ".position", "type": "vector3", "keys": pos},
-                                   {"name": ".quaternion", "type": "quaternion", "keys": rot}]}}
-                               for path, (pos, rot) in tracks.items()]}
-        if frames:
-            self.set_frame_poses(frames[0])
+        self._label_sent = saved
+        return {"type": "set_animation", "path": "",
+                "options": {"play": True, "repetitions": repetitions},
+                "animations": [{"path": path, "clip": {
+                    "fps": fps, "name": "default", "tracks": [
+                        {"name": ".position", "type": "vector3", "keys": pos},
+                        {"name": ".quaternion", "type": "quaternion", "keys": rot}]}}
+                    for path, (pos, rot) in tracks.items()]}
 
     # -- what a page replays ---------------------------------------------------------
     def commands(self):
         """Every meshcat command that draws the current scene (lowered dicts)."""
         with self._lock:
-            out = [self._camera()] + list(self._objects.values())
+            camera = self.camera()
+            self._view_camera = camera
+            self._label_sent = {}
+            out = camera.commands() + list(self._objects.values())
             out += [self._set_transform(p, m) for p, m in self._transforms.items()]
+            out += self._label_commands(self._poses_now(), camera, True)
             if self._animation is not None:
-                out.append(self._animation)
+                out.append(self._animation_command(camera))
         return out
 
     def html(self, live=False):
@@ -460,16 +729,6 @@ class RobotView:
             self._server.push(commands)
         if self._widget is not None:
             self._widget.push(commands)
-
-    def _camera(self):
-        """Put meshcat's camera at a distance that fits the robot (meshcat's is Y-up)."""
-        reach = self.reach or 1.0
-        if self.model is not None and not self.reach:
-            poses = self.model.link_poses({})
-            reach = max([float(np.linalg.norm(m[:3, 3])) for m in poses.values()] + [0.4])
-        d = 2.2 * reach + 0.5
-        return {"type": "set_property", "path": "/Cameras/default/rotated/<object>",
-                "property": "position", "value": [d, 0.6 * d, d * 0.8]}
 
 
 # The served page polls its own server for new commands (no websocket needed). When the

@@ -1,0 +1,281 @@
+"""The 3D views are framed for the reader.
+
+Every 3D view stored in the book (the static face: the `<iframe srcdoc>` saved in the
+notebook, the very HTML the built book shows) is opened in headless Chromium at the
+book's column (688 x 420 px) and measured from the picture: the model covers a good
+share of the view and is not cut off, the camera looks from above the floor grid, and no
+two frame names overlap. The live face gets the same scene (`RobotView.commands()`), and
+its names are placed again whenever /tf moves the frames: checked without a browser."""
+import base64
+import io
+import json
+import os
+import re
+import sys
+import time
+
+import numpy as np
+import pytest
+
+from labkit.robots.urdf import pose_matrix
+from labkit.viz import meshcat_view
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tests", "book"))
+BOOK = os.path.join(ROOT, "book")
+WIDTH, HEIGHT = 688, 420
+
+
+def stored_views():
+    """(notebook, cell index, iframe html) of every stored 3D view of the book."""
+    found = []
+    for part in sorted(os.listdir(BOOK)):
+        folder = os.path.join(BOOK, part)
+        if not os.path.isdir(folder) or part.startswith("_"):
+            continue
+        for name in sorted(os.listdir(folder)):
+            if not name.endswith(".ipynb"):
+                continue
+            with open(os.path.join(folder, name), encoding="utf-8") as handle:
+                nb = json.load(handle)
+            for index, cell in enumerate(nb["cells"]):
+                for output in cell.get("outputs", []):
+                    text = (output.get("data") or {}).get("text/html")
+                    text = "".join(text) if isinstance(text, list) else (text or "")
+                    if 'title="meshcat"' in text:
+                        found.append((name, index, text))
+    return found
+
+
+VIEWS = stored_views()
+
+READY = """(() => { const f = document.querySelector('iframe');
+  const w = f && f.contentWindow; const v = w && w.viewer;
+  return !!(v && v.scene_tree.find(['meshcat']).object.children.length >= 1); })()"""
+
+# show: 'all' | 'model' (no grid) | 'none' (background only) | a frame name (its name only)
+SHOW = """(async (what, at) => {
+  const w = document.querySelector('iframe').contentWindow, v = w.viewer;
+  const root = v.scene_tree.find(['meshcat']).object;
+  v.scene_tree.find(['Grid']).object.visible = (what === 'all');
+  root.visible = (what !== 'none');
+  root.traverse((o) => {
+    if (o === root) return;
+    const label = o.isSprite;
+    if (what === 'all' || what === 'model') { if (o.isMesh || o.isLine || o.isSprite) o.visible = true; }
+    else if (o.isMesh || o.isLine) o.visible = false;
+    if (label && what !== 'all' && what !== 'model') {
+      let n = o, name = null;
+      while (n && n !== root) { if (n.parent && n.parent.name === 'frames') { name = n.name; } n = n.parent; }
+      o.visible = (name === what);
+    }
+  });
+  if (v.animator && v.animator.actions.length) { v.animator.pause(); v.animator.seek(at); }
+  v.set_dirty();
+  await new Promise((r) => w.requestAnimationFrame(() => w.requestAnimationFrame(r)));
+  return true;
+})"""
+
+FACTS = """(() => { const w = document.querySelector('iframe').contentWindow, v = w.viewer;
+  const V = v.camera.position.constructor;
+  const cam = v.camera.getWorldPosition(new V());
+  const grid = v.scene_tree.find(['Grid']).object.getWorldPosition(new V());
+  const t = v.controls.target;
+  const names = [];
+  v.scene_tree.find(['meshcat']).object.traverse((o) => {
+    if (o.isSprite && o.parent && o.parent.parent && o.parent.parent.parent &&
+        o.parent.parent.parent.name === 'frames') names.push(o.parent.parent.name);
+  });
+  return {cam: [cam.x, cam.y, cam.z], grid_y: grid.y, target: [t.x, t.y, t.z],
+          names: names, paused: !!(v.animator && v.animator.clips && v.animator.clips.length)};
+})()"""
+
+
+def _shot(page):
+    from PIL import Image
+    rect = page.evaluate("JSON.stringify(document.querySelector('iframe')"
+                         ".getBoundingClientRect())")
+    r = json.loads(rect)
+    data = page.call("Page.captureScreenshot", format="png", clip={
+        "x": r["x"], "y": r["y"], "width": r["width"], "height": r["height"], "scale": 1})
+    img = Image.open(io.BytesIO(base64.b64decode(data["data"]))).convert("RGB")
+    return np.asarray(img, dtype=np.int16)
+
+
+def _mask_box(picture, background):
+    """(x0, y0, x1, y1) of the pixels that differ from the background, or None."""
+    diff = np.abs(picture - background).sum(axis=2) > 40
+    ys, xs = np.nonzero(diff)
+    if not len(xs):
+        return None
+    return xs.min(), ys.min(), xs.max(), ys.max()
+
+
+DURATION = """(() => { const a = document.querySelector('iframe').contentWindow.viewer.animator;
+  return a && a.actions.length ? Math.max(...a.actions.map((x) => x._clip.duration)) : 0; })()"""
+
+
+def _show(page, what, at=0.0):
+    page.evaluate(f"({SHOW})({json.dumps(what)}, {at})")
+    time.sleep(0.15)
+    return _shot(page)
+
+
+@pytest.fixture(scope="module")
+def browser(tmp_path_factory):
+    from book_cdp import Browser, find_chromium
+    binary = find_chromium()
+    if binary is None:
+        pytest.skip("chromium is not installed")
+    base = tmp_path_factory.mktemp("framing")
+    profile = base / "profile"
+    profile.mkdir()
+    b = Browser(binary, profile)
+    page = b.page()
+    page.call("Emulation.setDeviceMetricsOverride", width=WIDTH + 40, height=HEIGHT + 80,
+              deviceScaleFactor=1, mobile=False)
+    yield page, base
+    page.close()
+    b.close()
+
+
+def test_the_book_stores_3d_views():
+    names = {name for name, _, _ in VIEWS}
+    assert {"ch22_tf2.ipynb", "ch23_urdf.ipynb"} <= names
+
+
+@pytest.mark.parametrize("name,index,frame", VIEWS,
+                         ids=[f"{n}-cell{i}" for n, i, _ in VIEWS])
+def test_stored_3d_view_is_framed_for_the_reader(browser, name, index, frame):
+    page, base = browser
+    path = base / f"{name}-{index}.html"
+    path.write_text('<!DOCTYPE html><html><head><meta charset="utf-8"></head>'
+                    f'<body style="margin:0;padding:20px;width:{WIDTH}px">{frame}</body></html>',
+                    encoding="utf-8")
+    page.open(path.as_uri())
+    page.wait_for(READY, timeout=60)
+    time.sleep(0.5)
+    facts = page.evaluate(FACTS)
+    # seen from above the floor, looking down at a readable angle (three.js: Y up)
+    cam, target = np.array(facts["cam"]), np.array(facts["target"])
+    assert facts["cam"][1] > facts["grid_y"], "the camera is below the floor grid"
+    drop = (cam[1] - target[1]) / np.linalg.norm(cam - target)
+    assert drop >= np.sin(np.radians(15)), f"the camera looks from {np.degrees(np.arcsin(drop)):.0f} deg"
+
+    background = _show(page, "none")
+    # an animation (the driving facer) is measured over its whole run
+    duration = page.evaluate(DURATION) or 0.0
+    boxes = [_mask_box(_show(page, "model", duration * k / 8), background)
+             for k in (range(8) if duration else [0])]
+    assert all(b is not None for b in boxes), "nothing drawn"
+    x0, y0 = min(b[0] for b in boxes), min(b[1] for b in boxes)
+    x1, y1 = max(b[2] for b in boxes), max(b[3] for b in boxes)
+    model = (x0, y0, x1, y1)
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    # a sensible share of the view, and not cut off at its edges
+    assert w >= 0.35 * WIDTH or h >= 0.45 * HEIGHT, f"the model is {w} x {h} px"
+    assert x0 > 0 and y0 > 0 and x1 < WIDTH - 1 and y1 < HEIGHT - 1, f"cut off: {model}"
+
+    boxes = {}
+    for frame_name in facts["names"]:
+        box = _mask_box(_show(page, frame_name), background)
+        assert box is not None, f"the name {frame_name} is not drawn"
+        boxes[frame_name] = box
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            ba, bb = boxes[a], boxes[b]
+            apart = ba[2] < bb[0] or bb[2] < ba[0] or ba[3] < bb[1] or bb[3] < ba[1]
+            assert apart, f"the names {a} {ba} and {b} {bb} overlap"
+    assert page.errors() == []
+
+
+def _frames_view():
+    view = meshcat_view.RobotView(frame_scale=1.2, fixed_frame="world")
+    view.set_frame_poses({"world": np.eye(4),
+                          "turtle1": pose_matrix((5.5, 5.5, 0), (0, 0, 0)),
+                          "carrot1": pose_matrix((5.5, 7.5, 0), (0, 0, 0)),
+                          "turtle2": pose_matrix((4.0, 2.0, 0), (0, 0, 0.5))})
+    return view
+
+
+def _disjoint(boxes):
+    names = sorted(boxes)
+    for i, a in enumerate(names):
+        for b in names[i + 1:]:
+            if meshcat_view._overlap(boxes[a], boxes[b], margin=0.0):
+                return False
+    return True
+
+
+def test_camera_is_framed_from_the_bounding_box():
+    view = _frames_view()
+    lo, hi = view.bounds()
+    assert lo[0] == pytest.approx(0.0) and hi[1] == pytest.approx(7.5 + 1.2)
+    cam = view.camera()
+    np.testing.assert_allclose(cam.centre, (lo + hi) / 2)
+    assert cam.position[2] > hi[2]                       # above everything
+    _, _, points = view._extent()
+    assert len(points) >= 4 * 4                         # origin and three axis tips a frame
+    px = np.array([cam.project(p)[:2] for p in points])
+    # the scene fills its share: its farthest point from the view's centre is at FILL
+    reach = max(np.abs(px[:, 0] / (cam.width / 2) - 1).max(),
+                np.abs(px[:, 1] / (cam.height / 2) - 1).max())
+    assert reach == pytest.approx(meshcat_view.FILL, abs=1e-6)
+    # what the page gets: the scene shifted to the orbit target, the camera above it
+    commands = view.commands()
+    shift = next(c for c in commands if c["path"] == "/meshcat" and c["type"] == "set_transform")
+    np.testing.assert_allclose(np.array(shift["matrix"]).reshape(4, 4).T[:3, 3], -cam.centre,
+                               rtol=1e-6)
+    camera = next(c for c in commands if c["path"] == "/Cameras/default/rotated/<object>")
+    assert camera["value"][1] > 0                        # meshcat's camera frame is Y up
+
+
+def test_names_close_together_do_not_overlap_and_follow_the_frames_live(monkeypatch):
+    view = _frames_view()
+    view.commands()                                      # a page got the scene
+    pushed = []
+    monkeypatch.setattr(view, "_push", lambda commands: pushed.extend(commands))
+    # turtle2 closes in on turtle1 and carrot1: the names stay apart at every step
+    for k in range(12):
+        x = 4.0 + 1.5 * k / 11
+        y = 2.0 + 3.5 * k / 11
+        view.set_frame_poses({"turtle2": pose_matrix((x, y, 0), (0, 0, 0.5 + k / 5))})
+        boxes = view.label_boxes()
+        assert set(boxes) == {"world", "turtle1", "carrot1", "turtle2"}
+        assert _disjoint(boxes), boxes
+    labels = [c for c in pushed if c["path"].endswith("/label")]
+    assert labels and all(c["type"] == "set_transform" for c in labels)
+    # the name sent last for turtle2 sits where label_boxes() says (in the view's pixels)
+    last = [c for c in labels if c["path"] == "/meshcat/frames/turtle2/label"][-1]
+    local = np.array(last["matrix"]).reshape(4, 4).T[:3, 3]
+    pose = view._poses_now()["turtle2"]
+    world = pose[:3, :3] @ local + pose[:3, 3]
+    sx, sy, _ = view._view_camera.project(world)
+    x, y, w, h = view.label_boxes()["turtle2"]
+    assert x <= sx <= x + w and y <= sy <= y + h + 0.5 * h
+
+
+def test_place_labels_keeps_names_apart_even_on_one_point():
+    cam = meshcat_view.Camera(np.zeros(3), np.ones(3))
+    anchors = {name: (300.0, 200.0) for name in ("carrot1", "turtle1", "turtle2", "world")}
+    boxes = meshcat_view.place_labels(anchors, cam)
+    assert _disjoint(boxes)
+    for x, y, w, h in boxes.values():
+        assert 0 <= x and x + w <= cam.width and 0 <= y and y + h <= cam.height
+
+
+def test_robot_view_frames_the_robot_not_the_origin():
+    from labkit.robots import facer
+    view = meshcat_view.RobotView(facer.model_path())
+    lo, hi = view.bounds()
+    assert 0.2 < (hi - lo).max() < 0.6                   # the facer is ~0.3 m long
+    assert view.camera().distance < 1.5
+    drive = facer.drive_view(seconds=12.0, fps=10)
+    lo, hi = drive.bounds()                              # the whole 1.2 m circle it drives
+    assert 1.1 < hi[1] - lo[1] < 1.8
+
+
+def test_snapshot_is_deterministic_with_names():
+    view = _frames_view()
+    assert view.iframe() == view.iframe()          # names placed the same way each time
