@@ -377,6 +377,7 @@ class RobotView:
         self._animation = None    # (key frames, fps, repetitions)
         self._extents = {}        # link -> corners of its visuals in the link's frame
         self._view_camera = None  # the camera of the scene a page got last (names follow it)
+        self._view_empty = False  # that scene had nothing in it (the first frames re-frame it)
         self._label_sent = {}     # frame -> where its name was sent (frame coordinates)
         self._lock = threading.Lock()
         self._listeners = []      # live pages (server queues)
@@ -421,7 +422,10 @@ class RobotView:
             if self.show_frames:
                 for link_name in model.links:
                     self._add_frame(link_name)
+            shown = self._view_camera is not None
         self.set_joint_positions({})
+        if shown:        # a live page showed the scene before this model came: redraw it
+            self._push([{"type": "delete", "path": ROBOT}] + self.commands())
 
     def _add_frame(self, name):
         path = f"{FRAMES}/{name}"
@@ -536,13 +540,22 @@ class RobotView:
     def set_frame_poses(self, poses):
         """{frame: 4x4 in the fixed frame}: move links and triads."""
         with self._lock:
+            before = set(self._objects)
             for name, matrix in poses.items():
                 if self.model is not None and name in self.model.links:
                     self._transforms[f"{ROBOT}/{name}"] = matrix
                 if self.show_frames:
                     self._add_frame(name)
                     self._transforms[f"{FRAMES}/{name}"] = matrix
-        commands = [self._set_transform(p, m) for p, m in self._current(poses)]
+            # a frame first seen after a page got the scene: its axes go to the page too
+            commands = [o for p, o in self._objects.items() if p not in before]
+            if self._view_camera is None:
+                commands = []                      # no page yet: it gets everything at once
+            elif self._view_empty and self._transforms:
+                # the page was framed on an empty scene: frame it on what came
+                self._view_camera, self._view_empty = self.camera(), False
+                commands = self._view_camera.commands() + commands
+        commands += [self._set_transform(p, m) for p, m in self._current(poses)]
         with self._lock:
             if self._view_camera is not None:
                 commands += self._label_commands(self._poses_now(), self._view_camera, False)
@@ -603,6 +616,7 @@ class RobotView:
         with self._lock:
             camera = self.camera()
             self._view_camera = camera
+            self._view_empty = not self._transforms
             self._label_sent = {}
             out = camera.commands() + list(self._objects.values())
             out += [self._set_transform(p, m) for p, m in self._transforms.items()]

@@ -279,3 +279,31 @@ def test_robot_view_frames_the_robot_not_the_origin():
 def test_snapshot_is_deterministic_with_names():
     view = _frames_view()
     assert view.iframe() == view.iframe()          # names placed the same way each time
+
+
+def test_a_live_page_shown_before_anything_came_is_framed_when_frames_come(monkeypatch):
+    """rviz2's view in JupyterLab: the page may be drawn before /tf or /robot_description
+    arrive; the first frames bring their axes, names and a camera framed on them."""
+    view = meshcat_view.RobotView(frame_scale=1.2, fixed_frame="world")
+    view.commands()                                      # the page, on an empty scene
+    pushed = []
+    monkeypatch.setattr(view, "_push", lambda commands: pushed.extend(commands))
+    view.set_frame_poses({"world": np.eye(4), "turtle1": pose_matrix((5.5, 5.5, 0), (0, 0, 0))})
+    paths = [(c["type"], c["path"]) for c in pushed]
+    assert ("set_object", "/meshcat/frames/turtle1/triad") in paths
+    assert ("set_object", "/meshcat/frames/turtle1/label") in paths
+    camera = [c for c in pushed if c["path"] == "/Cameras/default/rotated/<object>"]
+    assert len(camera) == 1
+    # world (0, 0) to turtle1 (5.5, 5.5) and its 1.2 m axes
+    np.testing.assert_allclose(view._view_camera.centre[:2], (6.7 / 2, 6.7 / 2))
+    # later moves do not take the reader's camera away again
+    pushed.clear()
+    view.set_frame_poses({"turtle1": pose_matrix((6.0, 5.5, 0), (0, 0, 0))})
+    assert not [c for c in pushed if c["path"].startswith("/Cameras")]
+    # a model that comes later (robot_description) is drawn, framed on it
+    from labkit.robots import facer
+    pushed.clear()
+    view.set_model(facer.model_path())
+    steps = [(c["type"], c["path"]) for c in pushed]
+    assert steps.index(("delete", "/meshcat/robot")) < steps.index(
+        ("set_object", "/meshcat/robot/base_link/visual_0"))
