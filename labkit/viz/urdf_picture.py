@@ -59,6 +59,16 @@ def _grid(a, b, c, d, pieces):
     return out
 
 
+def _outward(faces):
+    """Faces of a convex shape centred on its origin, each wound so that its normal points
+    out (matplotlib shades a face by its normal: inward ones come out dark)."""
+    out = []
+    for f in faces:
+        normal = np.cross(f[1] - f[0], f[2] - f[0])
+        out.append(f[::-1] if normal @ f.mean(axis=0) < 0 else f)
+    return out
+
+
 def faces_of(shape, base_dir=None, piece=0.03):
     """A URDF geometry as polygons in its own frame; no polygon much larger than
     `piece` metres, so that sorting by depth paints them right."""
@@ -73,7 +83,7 @@ def faces_of(shape, base_dir=None, piece=0.03):
             quad = c[f]
             size = max(np.linalg.norm(quad[1] - quad[0]), np.linalg.norm(quad[3] - quad[0]))
             out += _grid(*quad, max(1, int(np.ceil(size / piece))))
-        return out
+        return _outward(out)
     if isinstance(shape, U.Cylinder):
         r, h = shape.radius, shape.length / 2
         ring = np.stack([r * np.cos(u), r * np.sin(u)], 1)
@@ -81,14 +91,16 @@ def faces_of(shape, base_dir=None, piece=0.03):
                 for i in range(24)]
         caps = [np.array([[0, 0, z], [*ring[i], z], [*ring[i + 1], z]])
                 for z in (-h, h) for i in range(24)]
-        return side + caps
+        return _outward(side + caps)
     if isinstance(shape, U.Sphere):
         v, r = np.linspace(0, np.pi, 13), shape.radius
 
         def p(a, b):
             return r * np.array([np.cos(a) * np.sin(b), np.sin(a) * np.sin(b), np.cos(b)])
-        return [np.array([p(u[i], v[j]), p(u[i + 1], v[j]), p(u[i + 1], v[j + 1]),
-                          p(u[i], v[j + 1])]) for i in range(24) for j in range(12)]
+        # (the rows at the poles start with two equal points: wind by the other three)
+        return [q if np.cross(q[2] - q[1], q[3] - q[1]) @ q.mean(axis=0) >= 0 else q[::-1]
+                for q in (np.array([p(u[i], v[j]), p(u[i + 1], v[j]), p(u[i + 1], v[j + 1]),
+                                    p(u[i], v[j + 1])]) for i in range(24) for j in range(12))]
     if isinstance(shape, U.Mesh):
         from labkit.robots.packages import resolve_uri
         scale = np.array(shape.scale or (1.0, 1.0, 1.0))
@@ -130,8 +142,10 @@ def figure(model, positions=None, title=None):
     if faces:
         # one collection: matplotlib sorts all faces of all links by depth together
         # (shaded by each face's normal, as a lit scene; pieces without seams)
+        from matplotlib.colors import LightSource
+        light = LightSource(azdeg=AZIMUTH + 90, altdeg=55)     # from above, behind the camera
         ax.add_collection3d(Poly3DCollection(faces, facecolors=colours, edgecolors=colours,
-                                             linewidths=0.3, shade=True))
+                                             linewidths=0.3, shade=True, lightsource=light))
     for m in poses.values():
         for k, colour in enumerate("rgb"):
             ax.plot(*zip(m[:3, 3], m[:3, 3] + 0.06 * m[:3, k]), color=colour, linewidth=1.4)
