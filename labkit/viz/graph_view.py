@@ -220,7 +220,9 @@ class GraphView:
         if self._widget is None:
             import ipywidgets
             svg = self._last[1] if self._last is not None else self.svg()
-            self._widget = ipywidgets.HTML(value=_html(svg))
+            # the whole cell's width (an HTML widget is otherwise as wide as its content)
+            self._widget = ipywidgets.HTML(value=_html(svg),
+                                           layout=ipywidgets.Layout(width="100%", margin="0"))
             self._widget.add_class("labkit-graph-view")
         return self._widget
 
