@@ -6,13 +6,9 @@ book's column (688 x 420 px) and measured from the picture: the model covers a g
 share of the view and is not cut off, the camera looks from above the floor grid, and no
 two frame names overlap. The live face gets the same scene (`RobotView.commands()`), and
 its names are placed again whenever /tf moves the frames: checked without a browser."""
-import base64
-import io
 import json
 import os
-import re
 import sys
-import time
 
 import numpy as np
 import pytest
@@ -22,6 +18,7 @@ from labkit.viz import meshcat_view
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 sys.path.insert(0, os.path.join(ROOT, "tests", "book"))
+import meshcat_measure  # noqa: E402
 BOOK = os.path.join(ROOT, "book")
 WIDTH, HEIGHT = 688, 420
 
@@ -48,78 +45,6 @@ def stored_views():
 
 
 VIEWS = stored_views()
-
-READY = """(() => { const f = document.querySelector('iframe');
-  const w = f && f.contentWindow; const v = w && w.viewer;
-  return !!(v && v.scene_tree.find(['meshcat']).object.children.length >= 1); })()"""
-
-# show: 'all' | 'model' (no grid) | 'none' (background only) | a frame name (its name only)
-SHOW = """(async (what, at) => {
-  const w = document.querySelector('iframe').contentWindow, v = w.viewer;
-  const root = v.scene_tree.find(['meshcat']).object;
-  v.scene_tree.find(['Grid']).object.visible = (what === 'all');
-  root.visible = (what !== 'none');
-  root.traverse((o) => {
-    if (o === root) return;
-    const label = o.isSprite;
-    if (what === 'all' || what === 'model') { if (o.isMesh || o.isLine || o.isSprite) o.visible = true; }
-    else if (o.isMesh || o.isLine) o.visible = false;
-    if (label && what !== 'all' && what !== 'model') {
-      let n = o, name = null;
-      while (n && n !== root) { if (n.parent && n.parent.name === 'frames') { name = n.name; } n = n.parent; }
-      o.visible = (name === what);
-    }
-  });
-  if (v.animator && v.animator.actions.length) { v.animator.pause(); v.animator.seek(at); }
-  v.set_dirty();
-  await new Promise((r) => w.requestAnimationFrame(() => w.requestAnimationFrame(r)));
-  return true;
-})"""
-
-FACTS = """(() => { const w = document.querySelector('iframe').contentWindow, v = w.viewer;
-  const V = v.camera.position.constructor;
-  const cam = v.camera.getWorldPosition(new V());
-  const grid = v.scene_tree.find(['Grid']).object.getWorldPosition(new V());
-  const t = v.controls.target;
-  const names = [];
-  v.scene_tree.find(['meshcat']).object.traverse((o) => {
-    if (o.isSprite && o.parent && o.parent.parent && o.parent.parent.parent &&
-        o.parent.parent.parent.name === 'frames') names.push(o.parent.parent.name);
-  });
-  return {cam: [cam.x, cam.y, cam.z], grid_y: grid.y, target: [t.x, t.y, t.z],
-          names: names, paused: !!(v.animator && v.animator.clips && v.animator.clips.length)};
-})()"""
-
-
-def _shot(page):
-    from PIL import Image
-    rect = page.evaluate("JSON.stringify(document.querySelector('iframe')"
-                         ".getBoundingClientRect())")
-    r = json.loads(rect)
-    data = page.call("Page.captureScreenshot", format="png", clip={
-        "x": r["x"], "y": r["y"], "width": r["width"], "height": r["height"], "scale": 1})
-    img = Image.open(io.BytesIO(base64.b64decode(data["data"]))).convert("RGB")
-    return np.asarray(img, dtype=np.int16)
-
-
-def _mask_box(picture, background):
-    """(x0, y0, x1, y1) of the pixels that differ from the background, or None."""
-    diff = np.abs(picture - background).sum(axis=2) > 40
-    ys, xs = np.nonzero(diff)
-    if not len(xs):
-        return None
-    return xs.min(), ys.min(), xs.max(), ys.max()
-
-
-DURATION = """(() => { const a = document.querySelector('iframe').contentWindow.viewer.animator;
-  return a && a.actions.length ? Math.max(...a.actions.map((x) => x._clip.duration)) : 0; })()"""
-
-
-def _show(page, what, at=0.0):
-    page.evaluate(f"({SHOW})({json.dumps(what)}, {at})")
-    time.sleep(0.15)
-    return _shot(page)
-
 
 @pytest.fixture(scope="module")
 def browser(tmp_path_factory):
@@ -153,40 +78,8 @@ def test_stored_3d_view_is_framed_for_the_reader(browser, name, index, frame):
                     f'<body style="margin:0;padding:20px;width:{WIDTH}px">{frame}</body></html>',
                     encoding="utf-8")
     page.open(path.as_uri())
-    page.wait_for(READY, timeout=60)
-    time.sleep(0.5)
-    facts = page.evaluate(FACTS)
-    # seen from above the floor, looking down at a readable angle (three.js: Y up)
-    cam, target = np.array(facts["cam"]), np.array(facts["target"])
-    assert facts["cam"][1] > facts["grid_y"], "the camera is below the floor grid"
-    drop = (cam[1] - target[1]) / np.linalg.norm(cam - target)
-    assert drop >= np.sin(np.radians(15)), f"the camera looks from {np.degrees(np.arcsin(drop)):.0f} deg"
-
-    background = _show(page, "none")
-    # an animation (the driving facer) is measured over its whole run
-    duration = page.evaluate(DURATION) or 0.0
-    boxes = [_mask_box(_show(page, "model", duration * k / 8), background)
-             for k in (range(8) if duration else [0])]
-    assert all(b is not None for b in boxes), "nothing drawn"
-    x0, y0 = min(b[0] for b in boxes), min(b[1] for b in boxes)
-    x1, y1 = max(b[2] for b in boxes), max(b[3] for b in boxes)
-    model = (x0, y0, x1, y1)
-    w, h = x1 - x0 + 1, y1 - y0 + 1
-    # a sensible share of the view, and not cut off at its edges
-    assert w >= 0.35 * WIDTH or h >= 0.45 * HEIGHT, f"the model is {w} x {h} px"
-    assert x0 > 0 and y0 > 0 and x1 < WIDTH - 1 and y1 < HEIGHT - 1, f"cut off: {model}"
-
-    boxes = {}
-    for frame_name in facts["names"]:
-        box = _mask_box(_show(page, frame_name), background)
-        assert box is not None, f"the name {frame_name} is not drawn"
-        boxes[frame_name] = box
-    names = sorted(boxes)
-    for i, a in enumerate(names):
-        for b in names[i + 1:]:
-            ba, bb = boxes[a], boxes[b]
-            apart = ba[2] < bb[0] or bb[2] < ba[0] or ba[3] < bb[1] or bb[3] < ba[1]
-            assert apart, f"the names {a} {ba} and {b} {bb} overlap"
+    assert meshcat_measure.count(page) == 1
+    assert meshcat_measure.problems(page) == []
     assert page.errors() == []
 
 
