@@ -311,7 +311,8 @@ class Camera:
         back = self.distance * self.back
         return [RobotView._set_transform(ROOT, shift),
                 RobotView._set_transform("/Grid", shift),
-                RobotView._set_transform("/Axes", shift),
+                # meshcat's own 0.5 m axes at the origin: RViz has none (the frames have theirs)
+                {"type": "set_property", "path": "/Axes", "property": "visible", "value": False},
                 {"type": "set_property", "path": "/Cameras/default/rotated/<object>",
                  "property": "position",
                  "value": [float(back[0]), float(back[2]), float(-back[1])]}]
