@@ -54,7 +54,7 @@ WORKERS = 2
 NOT_YET_COVERED: set[str] = {
     "ch14_node_tasks.ipynb", "ch15_parameters.ipynb", "ch16_colcon.ipynb", "ch17_rosdep.ipynb",
     "ch18_rqt.ipynb", "ch19_ros2doctor.ipynb",
-    "ch23_urdf.ipynb", "ch24_gazebo.ipynb", "ch25_testing.ipynb",
+    "ch23_urdf.ipynb", "ch25_testing.ipynb",
     "connect_real_ros.ipynb",
 }
 
