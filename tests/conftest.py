@@ -46,10 +46,14 @@ def _wine_module(session):
 
 
 def pytest_collection_finish(session):
-    # The Windows job (tests/platform/test_windows_wine.py, ~5 min under Wine) starts now,
-    # in the background on the second core, instead of when the suite reaches it.
+    # With LABKIT_WINE_EARLY=1 the Windows job (tests/platform/test_windows_wine.py, ~6 min
+    # under Wine) starts now, in the background on the second core, instead of when the
+    # suite reaches it: the suite takes ~5 min less. Off by default: under the Linux
+    # suite's load, `colcon test` inside Wine (ch16) was seen to fail once without a result
+    # file, and CI must not be flaky.
     module = _wine_module(session)
-    if module is not None and not session.config.option.collectonly:
+    if module is not None and not session.config.option.collectonly \
+            and os.environ.get("LABKIT_WINE_EARLY") == "1":
         module.start_windows_pytest()
 
 

@@ -13,6 +13,7 @@ oslayer copies instead).
 """
 import os
 import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -221,8 +222,15 @@ def start_windows_pytest():
         return
     scratch = tempfile.mkdtemp(prefix='labkit_wine_job_')
     report = os.path.join(scratch, 'report.xml')
+    # The notebooks run from a copy of book/: the Linux suite runs the same notebooks at
+    # the same time, and each keeps its workspaces in _work/ beside the notebook
+    shutil.copytree(os.path.join(ROOT, 'book'), os.path.join(scratch, 'book'),
+                    ignore=shutil.ignore_patterns('_build', '_work', '.ipynb_checkpoints',
+                                                  '.labkit_tmp', '__pycache__'))
+    notebooks = [_windows_path(os.path.join(scratch, nb)) for nb in WINDOWS_NOTEBOOKS]
     args = ['-m', 'pytest', '-q', '-p', 'no:cacheprovider', '-p', 'no:xdist',
-            f'--junit-xml={_windows_path(report)}', *WINDOWS_UNIT_TESTS, *WINDOWS_NOTEBOOKS]
+            '-c', _windows_path(os.path.join(ROOT, 'pyproject.toml')),
+            f'--junit-xml={_windows_path(report)}', *WINDOWS_UNIT_TESTS, *notebooks]
     for node in WINDOWS_EXCLUDED:
         args += ['--deselect', node]
     # through a pipe, drained by a thread: Python's stdout redirected to a file dies in Wine
@@ -246,6 +254,7 @@ def _finish_windows_pytest(timeout):
         code = proc.wait()
     seconds = time.monotonic() - _JOB['started']
     _JOB['reader'].join(timeout=30)
+    shutil.rmtree(os.path.join(_JOB['scratch'], 'book'), ignore_errors=True)
     out = b''.join(_JOB['chunks']).decode('utf-8', errors='replace')
     return code, out, seconds
 
