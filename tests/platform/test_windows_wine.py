@@ -214,6 +214,12 @@ def test_dds_on_loopback_from_windows_to_linux(tmp_path):
 _JOB = {}
 
 
+def _tmp_in_tree():
+    path = os.path.join(ROOT, '.labkit_tmp')
+    os.makedirs(path, exist_ok=True)
+    return path
+
+
 def start_windows_pytest():
     """Start the one Windows pytest (unit tests and notebooks) in the background, once:
     tests/conftest.py calls this as soon as collection has found this module, so Wine
@@ -224,10 +230,14 @@ def start_windows_pytest():
     report = os.path.join(scratch, 'report.xml')
     # The notebooks run from a copy of book/: the Linux suite runs the same notebooks at
     # the same time, and each keeps its workspaces in _work/ beside the notebook
-    shutil.copytree(os.path.join(ROOT, 'book'), os.path.join(scratch, 'book'),
+    # (inside the work tree, in git-ignored .labkit_tmp/: a notebook outside pytest's rootdir
+    # gets a JUnit name without its file, '::Cell 3')
+    book_copy = tempfile.mkdtemp(prefix='wine_book_', dir=_tmp_in_tree())
+    _JOB['book_copy'] = book_copy
+    shutil.copytree(os.path.join(ROOT, 'book'), os.path.join(book_copy, 'book'),
                     ignore=shutil.ignore_patterns('_build', '_work', '.ipynb_checkpoints',
                                                   '.labkit_tmp', '__pycache__'))
-    notebooks = [_windows_path(os.path.join(scratch, nb)) for nb in WINDOWS_NOTEBOOKS]
+    notebooks = [_windows_path(os.path.join(book_copy, nb)) for nb in WINDOWS_NOTEBOOKS]
     args = ['-m', 'pytest', '-q', '-p', 'no:cacheprovider', '-p', 'no:xdist',
             '-c', _windows_path(os.path.join(ROOT, 'pyproject.toml')),
             f'--junit-xml={_windows_path(report)}', *WINDOWS_UNIT_TESTS, *notebooks]
@@ -254,7 +264,7 @@ def _finish_windows_pytest(timeout):
         code = proc.wait()
     seconds = time.monotonic() - _JOB['started']
     _JOB['reader'].join(timeout=30)
-    shutil.rmtree(os.path.join(_JOB['scratch'], 'book'), ignore_errors=True)
+    shutil.rmtree(_JOB['book_copy'], ignore_errors=True)
     out = b''.join(_JOB['chunks']).decode('utf-8', errors='replace')
     return code, out, seconds
 
