@@ -222,3 +222,22 @@ def test_two_way_string_bridge_carries_each_message_once(gazebo):
     assert on_ros == ["from gazebo", "from ros"]                  # its own, once
     transport.TRANSPORT.unadvertise(gz_publish)
     node.destroy_node()
+
+
+def test_ros_to_gz_bridge_of_odometry_subscribes_on_the_ros_side(gazebo, capsys):
+    """Written the wrong way round for the simulator's odometry (']': ROS -> Gazebo),
+    Humble's bridge still creates it: a ROS subscriber on the topic and a Gazebo
+    publisher that forwards what ROS sends."""
+    labkit.ros2("run ros_gz_bridge parameter_bridge /odom_in@nav_msgs/msg/Odometry]ignition.msgs.Odometry")
+    assert ("[ros_gz_bridge]: Creating ROS->GZ Bridge: [/odom_in (nav_msgs/msg/Odometry) -> "
+            "/odom_in (ignition.msgs.Odometry)] (Lazy 0)") in capsys.readouterr().err
+    info = labkit.ros2("topic info /odom_in").stdout
+    assert "Publisher count: 0" in info and "Subscription count: 1" in info
+    got = []
+    transport.TRANSPORT.subscribe("/odom_in", "ignition.msgs.Odometry", got.append)
+    r = labkit.ros2("topic pub --once /odom_in nav_msgs/msg/Odometry "
+                    "'{header: {frame_id: odom}, pose: {pose: {position: {x: 2.5}}}}'")
+    assert r.returncode == 0
+    labkit.sleep(0.5)
+    assert got and got[-1]["pose"]["position"]["x"] == 2.5
+    assert got[-1]["header"]["data"][0] == {"key": "frame_id", "value": ["odom"]}

@@ -197,13 +197,62 @@ def string_to_gz(msg):
     return {"data": msg.data}
 
 
-# (ROS type, gz type) -> (gz->ros, ros->gz); None where labkit has no conversion
+# ROS -> Gazebo: what a bridge written with ']' (or '@') sends the other way; the
+# same fields ros_gz_bridge's convert_ros_to_gz fills for these types
+def _frame_to_gz(name):
+    return name.replace("/", "::")
+
+
+def _header_to_gz(header, **extra):
+    data = [{"key": "frame_id", "value": [_frame_to_gz(header.frame_id)]}]
+    data += [{"key": key, "value": [_frame_to_gz(value)]} for key, value in extra.items()]
+    return {"stamp": {"sec": int(header.stamp.sec), "nsec": int(header.stamp.nanosec)},
+            "data": data}
+
+
+def _xyz(v):
+    return {"x": float(v.x), "y": float(v.y), "z": float(v.z)}
+
+
+def _xyzw(q):
+    return {"x": float(q.x), "y": float(q.y), "z": float(q.z), "w": float(q.w)}
+
+
+def laser_scan_to_gz(msg):
+    return {"header": _header_to_gz(msg.header), "frame": _frame_to_gz(msg.header.frame_id),
+            "angle_min": float(msg.angle_min), "angle_max": float(msg.angle_max),
+            "angle_step": float(msg.angle_increment), "range_min": float(msg.range_min),
+            "range_max": float(msg.range_max), "count": len(msg.ranges), "vertical_count": 0,
+            "ranges": [float(r) for r in msg.ranges],
+            "intensities": [float(i) for i in msg.intensities]}
+
+
+def odometry_to_gz(msg):
+    header = _header_to_gz(msg.header, child_frame_id=msg.child_frame_id)
+    return {"header": header,
+            "pose": {"position": _xyz(msg.pose.pose.position),
+                     "orientation": _xyzw(msg.pose.pose.orientation)},
+            "twist": twist_to_gz(msg.twist.twist)}
+
+
+def tf_to_pose_v(msg):
+    return {"pose": [{"header": _header_to_gz(t.header, child_frame_id=t.child_frame_id),
+                      "name": _frame_to_gz(t.child_frame_id),
+                      "position": _xyz(t.transform.translation),
+                      "orientation": _xyzw(t.transform.rotation)} for t in msg.transforms]}
+
+
+def clock_to_gz(msg):
+    return {"sim": {"sec": int(msg.clock.sec), "nsec": int(msg.clock.nanosec)}}
+
+
+# (ROS type, gz type) -> (gz->ros, ros->gz)
 FACTORIES = {
     ("std_msgs/msg/String", "ignition.msgs.StringMsg"): (string_to_ros, string_to_gz),
-    ("sensor_msgs/msg/LaserScan", "ignition.msgs.LaserScan"): (laser_scan_to_ros, None),
-    ("nav_msgs/msg/Odometry", "ignition.msgs.Odometry"): (odometry_to_ros, None),
-    ("tf2_msgs/msg/TFMessage", "ignition.msgs.Pose_V"): (pose_v_to_tf, None),
-    ("rosgraph_msgs/msg/Clock", "ignition.msgs.Clock"): (clock_to_ros, None),
+    ("sensor_msgs/msg/LaserScan", "ignition.msgs.LaserScan"): (laser_scan_to_ros, laser_scan_to_gz),
+    ("nav_msgs/msg/Odometry", "ignition.msgs.Odometry"): (odometry_to_ros, odometry_to_gz),
+    ("tf2_msgs/msg/TFMessage", "ignition.msgs.Pose_V"): (pose_v_to_tf, tf_to_pose_v),
+    ("rosgraph_msgs/msg/Clock", "ignition.msgs.Clock"): (clock_to_ros, clock_to_gz),
     ("geometry_msgs/msg/Twist", "ignition.msgs.Twist"): (twist_to_ros, twist_to_gz),
 }
 
