@@ -46,6 +46,11 @@ def main(job_path: str) -> int:
         copy = os.path.join(scratch, os.path.basename(folder))
         shutil.copytree(folder, copy, ignore=shutil.ignore_patterns(
             "_build", "_work", ".labkit_tmp", ".ipynb_checkpoints", "*.exercises.yaml"))
+        # a chapter that runs real rclpy finds the reference environment beside book/
+        # ('../.venv-rosref' from the top of the book), as it does in the work tree
+        rosref = os.path.join(os.path.dirname(folder), ".venv-rosref")
+        if os.path.isdir(rosref):
+            os.symlink(rosref, os.path.join(scratch, ".venv-rosref"))
         os.chdir(copy)
         with open(src_nb, encoding="utf-8") as f:
             nb = json.load(f)
