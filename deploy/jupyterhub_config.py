@@ -49,7 +49,8 @@ except ImportError:
 c.Spawner.cmd = [os.path.join(os.path.dirname(sys.executable), "jupyterhub-singleuser")]
 c.Spawner.default_url = "/lab/tree/book/intro.md"
 c.Spawner.notebook_dir = "~"
-c.Spawner.args = ["--ContentsManager.pre_save_hook=labkit.tools.lab.strip_live_views"]
+c.Spawner.args = ["--ContentsManager.pre_save_hook=labkit.tools.lab.strip_live_views",
+                  "--LabApp.custom_css=True"]     # labkit's custom.css (labkit-start installs it)
 
 
 def _environment(spawner):

@@ -8,7 +8,9 @@ installed with pip alone (`pip install "labkit[lab]"`, no book beside it) Jupyte
 opens the current folder (or --root) as it is. Run as root (Docker, WSL, cloud VMs)
 it passes JupyterLab's --allow-root itself. JupyterLab starts with the settings in
 lab_settings/overrides.json: no "get notified about official Jupyter news?" popup, no
-update check (nothing reaches the network).
+update check (nothing reaches the network); and with lab_custom/custom.css, which
+scales an SVG picture wider than its cell down to the cell (JupyterLab draws SVG
+outputs as images at their own size).
 
 JupyterLab saves (and autosaves) the notebooks it has open. So that a learner's
 checkout stays clean, the book's files are copied once into a working folder
@@ -33,6 +35,8 @@ BOOK = ROOT / "book"
 SKIP = {"_build", "_work", ".ipynb_checkpoints", "__pycache__"}
 WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
 SETTINGS = pathlib.Path(__file__).resolve().parent / "lab_settings"
+CUSTOM_CSS = pathlib.Path(__file__).resolve().parent / "lab_custom" / "custom.css"
+CSS_BEGIN, CSS_END = "/* labkit lab: begin */", "/* labkit lab: end */"
 
 
 def working_copy(book=BOOK, target=ROOT / "lab"):
@@ -76,7 +80,30 @@ def command(root, extra=()):
             f"--notebook-dir={root}",
             "--ContentsManager.pre_save_hook=labkit.tools.lab.strip_live_views",
             f"--LabApp.app_settings_dir={SETTINGS}",
+            "--LabApp.custom_css=True",       # the page loads <config dir>/custom/custom.css
             *extra]
+
+
+def install_custom_css(config_dir=None):
+    """Put labkit's rules into JupyterLab's custom.css (<Jupyter config dir>/custom/),
+    which the page loads when started with --LabApp.custom_css=True, as `labkit lab`
+    starts it; jupyter_server reads custom.css from the config dir only. The rules sit
+    between two marker comments: whatever else the file holds is kept, and running
+    again replaces only labkit's block. Returns the file's path."""
+    if config_dir is None:
+        from jupyter_core.paths import jupyter_config_dir
+        config_dir = jupyter_config_dir()
+    path = pathlib.Path(config_dir) / "custom" / "custom.css"
+    path.parent.mkdir(parents=True, exist_ok=True)
+    ours = f"{CSS_BEGIN}\n{CUSTOM_CSS.read_text(encoding='utf-8').strip()}\n{CSS_END}\n"
+    text = path.read_text(encoding="utf-8") if path.exists() else ""
+    if CSS_BEGIN in text and CSS_END in text:
+        head, rest = text.split(CSS_BEGIN, 1)
+        text = head + ours + rest.split(CSS_END, 1)[1].lstrip("\n")
+    else:
+        text = text + ("\n" if text and not text.endswith("\n") else "") + ours
+    path.write_text(text, encoding="utf-8")
+    return path
 
 
 def run(cmd, env=None):
@@ -125,6 +152,7 @@ def main(argv=None):
             print(f"labkit: {len(copied)} files of the book copied to {root.name}/ "
                   "(your working copy; the book itself stays as shipped)")
     env = dict(os.environ, LABKIT_TIME="live")
+    install_custom_css()
     return run(command(root, argv), env=env)
 
 

@@ -100,6 +100,7 @@ def lab(tmp_path):
                JUPYTERLAB_WORKSPACES_DIR=str(tmp_path / "workspaces"),
                JUPYTER_CONFIG_DIR=str(tmp_path / "config"))
     log = open(tmp_path / "lab.log", "wb")
+    lab_tool.install_custom_css(tmp_path / "config")       # as `make lab` does
     # `make lab`'s own server command (labkit.tools.lab), on a folder of our own
     server = subprocess.Popen(
         lab_tool.command(root, [

@@ -79,6 +79,7 @@ def test_entry_point_copies_the_book_and_keeps_edits(tmp_path):
     mine.write_text("my own edits\n", encoding="utf-8")
     env = dict(os.environ, HOME=str(home), PYTHONPATH=str(REPO),
                PATH=os.path.dirname(sys.executable) + os.pathsep + os.environ["PATH"])
+    env.pop("JUPYTER_CONFIG_DIR", None)
     res = subprocess.run(["sh", str(DEPLOY / "labkit-start"), "sh", "-c", "echo started $HOME"],
                          env=env, capture_output=True, text=True, timeout=120)
     assert res.returncode == 0, res.stderr
@@ -86,3 +87,6 @@ def test_entry_point_copies_the_book_and_keeps_edits(tmp_path):
     assert (home / "book" / "_toc.yml").is_file()
     assert (home / "book" / "part1_basics" / "ch02_nodes.ipynb").is_file()
     assert mine.read_text(encoding="utf-8") == "my own edits\n"
+    # labkit's custom.css (wide SVG pictures fit their cell) in the learner's config dir
+    assert ".jp-RenderedSVG img" in (home / ".jupyter" / "custom" / "custom.css").read_text(
+        encoding="utf-8")

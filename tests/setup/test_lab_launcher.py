@@ -88,3 +88,20 @@ def test_running_lab_serves_news_off(tmp_path):
             server.kill()
             server.wait()
         log.close()
+
+
+def test_custom_css_is_installed_beside_the_learners_own_rules(tmp_path):
+    """`labkit lab` loads custom.css (--LabApp.custom_css=True) and puts its rule for
+    wide SVG pictures there, keeping the learner's own rules and never doubling."""
+    assert "--LabApp.custom_css=True" in lab.command(tmp_path)
+    mine = "body { font-size: 15px; }\n"
+    (tmp_path / "custom").mkdir()
+    (tmp_path / "custom" / "custom.css").write_text(mine, encoding="utf-8")
+    path = lab.install_custom_css(tmp_path)
+    lab.install_custom_css(tmp_path)
+    text = path.read_text(encoding="utf-8")
+    assert text.startswith(mine)
+    assert text.count(lab.CSS_BEGIN) == 1 and text.count(lab.CSS_END) == 1
+    assert ".jp-RenderedSVG img" in text and "max-width: 100%" in text
+    fresh = lab.install_custom_css(tmp_path / "elsewhere")
+    assert fresh.read_text(encoding="utf-8").startswith(lab.CSS_BEGIN)

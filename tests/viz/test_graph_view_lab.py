@@ -3,7 +3,8 @@ Chromium at 1280 px with the file browser open, as the reader of issue 20 saw it
 
 - The live view (`GraphView(live=True)`) of a graph wider than the cell is scaled to
   the cell's width: nothing cut at the right, nothing to scroll. The snapshot of the
-  same graph (automatic layout: top to bottom when left to right is too wide) fits too.
+  same graph (automatic layout: top to bottom when left to right is too wide) fits too,
+  and a snapshot too wide even top to bottom is scaled down to the cell (custom.css).
 - A picture placed in the text (`GraphView()`) is a snapshot: after the notebook has
   started more nodes, the live view shows them and the snapshot still does not."""
 
@@ -37,12 +38,17 @@ later.create_publisher(String, "/between_stage_5_and_later", 10)
 made[5].create_publisher(String, "/between_stage_5_and_later", 10)
 later.create_subscription(String, "/between_stage_0_and_stage_1", lambda msg: None, 10)
 labkit_sleep = __import__("labkit").sleep(2.0)"""
+WIDEST = """fan = [rclpy.create_node(f"camera_driver_number_{i}") for i in range(10)]
+for node in fan:
+    node.create_publisher(String, "/all_the_cameras_merged_into_one_stream", 10)
+GraphView(rankdir="TB")"""
 CELLS = [
     WIDE,
     'live_view = GraphView(rankdir="LR", live=True)\nlive_view',
     "GraphView()",
     LATER,
     "live_view.stop()\nprint(live_view.live)",
+    WIDEST,
 ]
 
 # where the picture of cell i is, and where its output area ends
@@ -114,6 +120,15 @@ def test_live_graph_fits_its_cell_and_the_snapshot_stays(notebook, chrome, lab):
     later = _measure(chrome, 1, live_sel)
     assert later["right"] <= later["area_right"] + 0.5 and not later["scrolls"], later
     _run_cell(chrome, 4)
+    # a snapshot too wide for the cell even top to bottom (ten publishers side by side):
+    # `make lab`'s custom.css scales it down to the cell, as the live view is
+    _run_cell(chrome, 5)
+    chrome.wait_for(f"{NB}.content.widgets[5].node.querySelector({snap_sel!r}) !== null", 30)
+    chrome.wait_for(f"{NB}.content.widgets[5].node.querySelector({snap_sel!r}).complete", 10)
+    widest = _measure(chrome, 5, snap_sel)
+    assert widest["natural"] > widest["area_width"] + 50, widest
+    assert widest["right"] <= widest["area_right"] + 0.5 and not widest["scrolls"], widest
+    assert widest["width"] >= 0.9 * widest["area_width"], widest
     errors = [o for i in range(len(CELLS)) for o in _outputs(chrome, i)
               if o["output_type"] == "error"]
     assert not errors, errors
