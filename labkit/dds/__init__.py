@@ -46,6 +46,7 @@ import threading
 from labkit.dds.config import ConfigError
 
 __all__ = ["connect", "disconnect", "current", "is_connected", "ConfigError", "ConnectError",
+           "UnmappableDomain",
            "auto_enabled", "settle_discovery", "wait_until"]
 
 _bridge = None
@@ -55,6 +56,36 @@ _saved_domain = []       # ROS_DOMAIN_ID before connect() set it
 
 class ConnectError(RuntimeError):
     """Joining DDS failed; the message is one line for the user."""
+
+
+# Fast DDS (Humble's default rmw) maps domain d to UDP ports 7400 + 250 * d + offsets:
+# from 233 on they pass 65535 and the participant is refused with this line
+# (PortParameters.h; labkit.rclpy.node says the same for a node on such a domain)
+PORT_TOO_HIGH = ("Calculated port number is too high. Probably the domainId is over 232 "
+                 "or portBase is too high.")
+MAX_MAPPABLE_DOMAIN_ID = 232
+
+
+class UnmappableDomain(ConfigError):
+    """A domain id DDS cannot map to ports: ROS's one line, shown without a traceback
+    in a notebook (IPython shows what `_render_traceback_` returns instead)."""
+
+    def __init__(self):
+        super().__init__(PORT_TOO_HIGH)
+
+    def _render_traceback_(self):
+        return [PORT_TOO_HIGH]
+
+
+def _refuse_unmappable(domain_id):
+    """Before labkit's own range check: an integer domain past 232 (given, or from
+    ROS_DOMAIN_ID) gets Fast DDS's line, as Humble's rmw refuses its participant."""
+    if domain_id is None:
+        text = os.environ.get("ROS_DOMAIN_ID", "").strip()
+        domain_id = int(text) if text.isdigit() else None
+    if (isinstance(domain_id, int) and not isinstance(domain_id, bool)
+            and domain_id > MAX_MAPPABLE_DOMAIN_ID):
+        raise UnmappableDomain()
 
 
 def current():
@@ -85,6 +116,7 @@ def connect(domain_id=None, localhost_only=None):
     if world.mode() != "live":
         raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
                            "stays in-process (call labkit.set_time_mode('live') first)")
+    _refuse_unmappable(domain_id)
     domain = config.domain_id(domain_id)
     reach = config.localhost_only(localhost_only)
     with _lock:
