@@ -1,19 +1,53 @@
-"""Start-up cost: a fresh interpreter that activates labkit (as %load_ext does), then
-rclpy.init() + a node + a publisher. Five runs, median (target < 1 s).
+"""Start-up and exit, side by side in one run (interleaved, RUNS rounds, medians):
 
-    python benchmarks/bench_startup.py
+- real rclpy (the reference venv, Fast DDS): `python talker.py`
+- `labkit exec talker.py` with DDS on (live time, joins DDS on loopback, a private domain)
+- `labkit exec talker.py` with LABKIT_DDS=off
+- `labkit exec empty.py` (an empty script) with DDS on and off: the floor
+- a fresh interpreter that activates labkit as `%load_ext labkit` does, then
+  rclpy.init() + a node + a publisher (in-process, target < 1 s)
+
+For the talker, three figures per run, from the parent's wall clock (the child prints
+time.time() at its points): start -> first publish returned, script end -> process gone
+(exit), and the whole process. Target (issue 19): labkit exec start to first publish no
+slower than real rclpy's, with DDS on and off.
+
+    python benchmarks/bench_startup.py [--runs N]
+    python -X importtime -m labkit exec empty.py     # what an empty script imports
 """
+import os
+import random
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 RUNS = 5
 
+# a plain rclpy program: runs unchanged on real rclpy and under `labkit exec`
+TALKER = '''
+import time
+import rclpy
+from std_msgs.msg import String
+rclpy.init(args=[])
+node = rclpy.create_node('startup_talker')
+publisher = node.create_publisher(String, 'chatter', 10)
+msg = String()
+msg.data = 'hello'
+publisher.publish(msg)
+print('FIRST', time.time(), flush=True)
+node.destroy_node()
+rclpy.shutdown()
+print('END', time.time(), flush=True)
+'''
+EMPTY = "import time\nprint('END', time.time(), flush=True)\n"
+
 # Timed inside the fresh interpreter, from before `import labkit` to the publisher.
-PROGRAM = '''
+IN_PROCESS = '''
 import time
 t0 = time.perf_counter()
 import labkit
@@ -29,25 +63,97 @@ rclpy.shutdown()
 '''
 
 
-def one_run():
-    start = time.perf_counter()
-    result = subprocess.run([sys.executable, '-c', PROGRAM], capture_output=True, text=True,
-                            timeout=120, cwd=REPO, env={'PYTHONPATH': str(REPO),
-                                                        'LABKIT_TIME': 'live',
-                                                        'PATH': '/usr/bin:/bin'})
-    wall = time.perf_counter() - start
+def _env(extra):
+    env = {k: v for k, v in os.environ.items()
+           if not k.startswith(('LABKIT_', 'ROS_', 'PYTHONPATH'))}
+    env.update(extra)
+    return env
+
+
+def timed(argv, env):
+    """{'first': s, 'exit': s, 'total': s} of one process, from the parent's clock."""
+    start = time.time()
+    result = subprocess.run(argv, capture_output=True, text=True, timeout=120, env=env,
+                            cwd=REPO)
+    gone = time.time()
+    if result.returncode != 0:
+        raise RuntimeError(f'{argv} failed ({result.returncode}):\n{result.stderr[-2000:]}')
+    marks = {}
+    for line in result.stdout.splitlines():
+        word, _, stamp = line.partition(' ')
+        if word in ('FIRST', 'END'):
+            marks[word] = float(stamp)
+    out = {'total': gone - start, 'exit': gone - marks['END']}
+    if 'FIRST' in marks:
+        out['first'] = marks['FIRST'] - start
+    return out
+
+
+def in_process():
+    result = subprocess.run([sys.executable, '-c', IN_PROCESS], capture_output=True,
+                            text=True, timeout=120, cwd=REPO,
+                            env=_env({'PYTHONPATH': str(REPO), 'LABKIT_TIME': 'live'}))
     if result.returncode != 0:
         raise RuntimeError(result.stderr[-2000:])
-    return wall, float(result.stdout.strip().splitlines()[-1])
+    return float(result.stdout.strip().splitlines()[-1])
 
 
 def main():
-    runs = [one_run() for _ in range(RUNS)]
-    walls = [w for w, _ in runs]
-    inside = [i for _, i in runs]
-    print(f'fresh interpreter, whole process wall time: median {statistics.median(walls):.3f} s '
-          f'(runs: {", ".join(f"{w:.3f}" for w in walls)})')
-    print(f'import labkit -> activate -> init -> node -> publisher: median '
+    from _common import reference_python
+    runs = RUNS
+    if '--runs' in sys.argv:
+        runs = int(sys.argv[sys.argv.index('--runs') + 1])
+    tmp = Path(tempfile.mkdtemp(prefix='bench_startup_'))
+    talker, empty = tmp / 'talker.py', tmp / 'empty.py'
+    talker.write_text(TALKER, encoding='utf-8')
+    empty.write_text(EMPTY, encoding='utf-8')
+    domain = str(random.randint(150, 199))
+    dds = {'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST', 'ROS_DOMAIN_ID': domain}
+    labkit = [sys.executable, '-m', 'labkit', 'exec']
+    on = _env({'PYTHONPATH': str(REPO), 'LABKIT_TIME': 'live', 'LABKIT_DDS': 'on', **dds})
+    off = _env({'PYTHONPATH': str(REPO), 'LABKIT_TIME': 'live', 'LABKIT_DDS': 'off'})
+    rows = {}
+    real = reference_python()
+    if real is not None:
+        rows['real rclpy (Jazzy, Fast DDS)'] = ([real, str(talker)], _env(dds))
+    else:
+        print('real rclpy: reference venv not found (set ROSREF_PYTHON)')
+    rows['labkit exec, DDS on'] = (labkit + [str(talker)], on)
+    rows['labkit exec, DDS off'] = (labkit + [str(talker)], off)
+    rows['labkit exec empty.py, DDS on'] = (labkit + [str(empty)], on)
+    rows['labkit exec empty.py, DDS off'] = (labkit + [str(empty)], off)
+    figures = {label: [] for label in rows}
+    inside = []
+    for _ in range(runs):                         # interleaved: load hits every row alike
+        for label, (argv, env) in rows.items():
+            figures[label].append(timed(argv, env))
+        inside.append(in_process())
+    try:
+        load = os.getloadavg()[0]
+        print(f'{runs} rounds, interleaved; load average {load:.1f} at the end')
+    except OSError:
+        print(f'{runs} rounds, interleaved')
+    print(f"{'':32} {'start->first publish':>21} {'exit':>12} {'whole process':>14}  (medians; range)")
+
+    def cell(values):
+        if not values:
+            return f"{'-':>12}"
+        return f'{statistics.median(values):>6.3f} s'
+
+    for label, runs_ in figures.items():
+        first = [r['first'] for r in runs_ if 'first' in r]
+        exit_ = [r['exit'] for r in runs_]
+        total = [r['total'] for r in runs_]
+        span = f"{min(total):.2f}-{max(total):.2f}"
+        print(f'{label:32} {cell(first):>21} {cell(exit_):>12} {cell(total):>14}  ({span})')
+    ref = figures.get('real rclpy (Jazzy, Fast DDS)')
+    if ref:
+        base = statistics.median(r['first'] for r in ref)
+        for label in ('labkit exec, DDS on', 'labkit exec, DDS off'):
+            mine = statistics.median(r['first'] for r in figures[label])
+            print(f'{label}: start->first publish {mine / base:.2f}x real rclpy '
+                  f'(target <= 1x)')
+    print(f'in process, import labkit -> activate -> init -> node -> publisher: median '
           f'{statistics.median(inside):.3f} s (target < 1 s)')
 
 

@@ -67,11 +67,9 @@ def reset():
     daemon = sys.modules.get('labkit.cli.ros2.daemon')
     if daemon is not None:         # `ros2 daemon status` starts over: not running
         daemon.reset()
-    try:  # live graph views and consoles hold nodes of their own
-        from labkit.viz import graph_view
+    graph_view = sys.modules.get('labkit.viz.graph_view')
+    if graph_view is not None:     # live graph views and consoles hold nodes of their own
         graph_view.stop_all()
-    except ImportError:
-        pass
     try:  # goal ids restart too, so a notebook re-run from here prints the same ids
         from labkit.rclpy.action import _common
         _common.reset_virtual_uuids()

@@ -63,7 +63,7 @@ def exec_file(path, args=(), *, time_mode=None):
         return 2
     if time_mode is not None:
         set_time_mode(time_mode)
-    if not _join_dds():
+    if not _join_dds(deferred=True):
         return 1
     from labkit import compat
     was_active = compat.is_active()
@@ -92,13 +92,19 @@ def exec_file(path, args=(), *, time_mode=None):
     return rc
 
 
-def _join_dds(settle=False):
+def _join_dds(settle=False, deferred=False):
     """Like a ROS 2 process, join the DDS graph (live time, unless LABKIT_DDS=off).
-    False after a one-line error that ROS would also stop on (a bad ROS_DOMAIN_ID)."""
+    False after a one-line error that ROS would also stop on (a bad ROS_DOMAIN_ID).
+
+    deferred (labkit exec): as Humble's rmw, the participant comes with the program's
+    first node, and is made in the background while the program goes on."""
     from labkit import dds
     if not dds.auto_enabled():
         return True
     try:
+        if deferred:
+            dds.join_at_first_node()
+            return True
         dds.connect()
     except dds.ConfigError as e:
         if os.environ.get('ROS_DOMAIN_ID', '').strip().isdigit():

@@ -41,12 +41,13 @@ verb waits forever); a server killed without leaving is noticed when its DDS lea
 runs out (Fast DDS: 20 s, Cyclone: 10 s).
 """
 import os
+import sys
 import threading
 
 from labkit.dds.config import ConfigError
 
 __all__ = ["connect", "disconnect", "current", "is_connected", "ConfigError", "ConnectError",
-           "UnmappableDomain",
+           "UnmappableDomain", "join_at_first_node",
            "auto_enabled", "settle_discovery", "wait_until"]
 
 _bridge = None
@@ -89,8 +90,111 @@ def _refuse_unmappable(domain_id):
 
 
 def current():
-    """The Bridge of this process (None when not connected)."""
+    """The Bridge of this process (None when not connected, or still joining)."""
     return _bridge
+
+
+# ------------------------------------------------------------ joining with the first node
+# Humble's rmw creates a process's participant with its first node (rclpy.init() alone
+# joins nothing). `labkit exec` does the same, and in the background: the program goes on
+# (its node, publishers, first messages in-process) while Cyclone DDS is imported and the
+# participant made; the bridge then mirrors every endpoint made meanwhile (a transient-local
+# publisher's history included), as it mirrors any endpoint a moment after it appears.
+_defer_lock = threading.Lock()   # never held while taking GRAPH.lock or _lock
+_deferred = None                 # the graph listener waiting for the first node
+_pending = None                  # the thread joining now
+_leaving = False                 # disconnect() is waiting for it: it must not join
+
+
+def join_at_first_node(domain_id=None, localhost_only=None):
+    """Join DDS when this process makes its first node, in a background thread.
+
+    The settings are checked now (ConfigError / UnmappableDomain, one line, as connect());
+    connect(), disconnect(), settle_discovery() and wait_until() wait for a join under way."""
+    global _deferred, _leaving
+    from labkit.dds import config
+    from labkit.graph import world
+    from labkit.graph.registry import GRAPH
+    if world.mode() != "live":
+        raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
+                           "stays in-process (call labkit.set_time_mode('live') first)")
+    _refuse_unmappable(domain_id)
+    domain = config.domain_id(domain_id)
+    reach = config.localhost_only(localhost_only)
+
+    def first_node():
+        global _deferred, _pending
+        if not GRAPH.nodes:
+            return
+        with _defer_lock:
+            if _deferred is not first_node:
+                return
+            _deferred = None
+            thread = threading.Thread(target=_join_now, args=(domain, reach),
+                                      name="labkit-dds-join", daemon=True)
+            try:      # it belongs to the program (the main process), whoever made the node
+                from labkit import process
+                thread._labkit_process = process.MAIN
+            except (ImportError, AttributeError):
+                pass
+            _pending = thread
+        _unlisten(first_node)
+        thread.start()
+
+    _cancel_deferred()
+    _await_pending()
+    with _defer_lock:
+        _deferred = first_node
+        _leaving = False
+    GRAPH.listeners.append(first_node)
+    first_node()                      # a node made already
+
+
+def _unlisten(listener):
+    from labkit.graph.registry import GRAPH
+    try:
+        GRAPH.listeners.remove(listener)
+    except ValueError:
+        pass
+
+
+def _cancel_deferred():
+    global _deferred
+    with _defer_lock:
+        listener, _deferred = _deferred, None
+    if listener is not None:
+        _unlisten(listener)
+
+
+def _join_now(domain, reach):
+    try:
+        import labkit.dds.bridge  # noqa: F401  (the slow part: Cyclone DDS's Python API)
+        # CDR (and numpy), here rather than at the program's first publish over DDS
+        import labkit.interfaces.cdr  # noqa: F401
+    except ImportError:
+        pass                      # connect() says so
+    if _leaving:                  # the program ended meanwhile: join nothing
+        return
+    try:
+        connect(domain, reach)
+    except ConfigError as e:
+        print(f"labkit: {e}", file=sys.stderr, flush=True)
+    except Exception as e:      # no DDS here: keep working in-process, say so once
+        print(f"[WARN] [labkit.dds]: {e}; staying in-process", file=sys.stderr, flush=True)
+
+
+def _await_pending(leaving=False):
+    """Wait for a background join under way (labkit exec's first node) to finish;
+    leaving (disconnect): one that has not made its participant yet makes none."""
+    global _pending, _leaving
+    thread = _pending
+    if leaving and thread is not None:
+        _leaving = True
+    if thread is not None and thread is not threading.current_thread():
+        thread.join()
+        with _defer_lock:
+            if _pending is thread:
+                _pending = None
 
 
 def is_connected():
@@ -113,6 +217,8 @@ def connect(domain_id=None, localhost_only=None):
     global _bridge
     from labkit.dds import config
     from labkit.graph import world
+    _cancel_deferred()
+    _await_pending()
     if world.mode() != "live":
         raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
                            "stays in-process (call labkit.set_time_mode('live') first)")
@@ -152,6 +258,8 @@ def connect(domain_id=None, localhost_only=None):
 def disconnect():
     """Leave the DDS network: remote nodes vanish from the graph; local ones stay."""
     global _bridge
+    _cancel_deferred()
+    _await_pending(leaving=True)
     with _lock:
         b, _bridge = _bridge, None
         if _saved_domain:
@@ -172,6 +280,7 @@ def settle_discovery(seconds=0.5, longest=4.0):
     and up to `longest` for peers whose node list has not arrived yet (a Fast DDS
     writer sends its stored ros_discovery_info at its next heartbeat, up to 3 s)."""
     import time
+    _await_pending()
     b = _bridge
     if b is None:
         return
@@ -201,6 +310,7 @@ def wait_until(cond, longest=PATIENCE_S):
     along): when connected, a verb that names a node waits for it to appear, up to
     `longest` seconds; not connected, the in-process graph is complete: no wait."""
     import time
+    _await_pending()
     b = _bridge
     if cond():
         return True

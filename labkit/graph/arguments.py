@@ -7,8 +7,6 @@ UnknownROSArgsError).
 import fnmatch
 import re
 
-import yaml
-
 from labkit.graph import names
 
 ROS_ARGS = "--ros-args"
@@ -97,6 +95,7 @@ def _parse_remap(rule):
 
 def parse_value(text):
     """A -p value, typed as YAML like rcl_parse_yaml_value."""
+    import yaml             # here: a program without parameters starts without it
     try:
         value = yaml.safe_load(text) if text != "" else ""
     except yaml.YAMLError as exc:
@@ -135,6 +134,7 @@ def _flatten(prefix, data, out):
 
 def load_params_file(path):
     """[(node pattern, name, value)] from a ROS 2 parameter YAML file."""
+    import yaml
     try:
         with open(path, encoding="utf-8") as f:
             data = yaml.safe_load(f)

@@ -11,9 +11,21 @@ from collections import UserList, UserString
 from collections.abc import Sequence, Set
 from operator import attrgetter
 
-import numpy
-
 from labkit.interfaces import definition as d
+
+
+class _Numpy:
+    """numpy, imported at its first use (only fixed-size numeric arrays need it: an empty
+    `labkit exec` script or a String talker starts without its ~50 ms); the first use puts
+    the module itself in this module's globals."""
+
+    def __getattr__(self, name):
+        import numpy as module
+        globals()['numpy'] = module
+        return getattr(module, name)
+
+
+numpy = _Numpy()
 
 _FLOAT_BOUNDS = {'float': 3.402823466e+38, 'double': 1.7976931348623157e+308}
 _FLOAT_NAMES = {'float': 'float', 'double': 'double'}
@@ -114,7 +126,8 @@ def _make_setter(m):
         max_size = t.maximum_size if isinstance(t, d.BoundedSequence) else None
         if special:
             tc = d.ARRAY_TYPECODES[vt.typename]
-            dtype = numpy.dtype(d.NUMPY_DTYPES[vt.typename])
+            # only a fixed-size array is a numpy.ndarray (a sequence is an array.array)
+            dtype = numpy.dtype(d.NUMPY_DTYPES[vt.typename]) if is_array else None
 
         def check(value):
             if not ((isinstance(value, (Sequence, Set, UserList))) and

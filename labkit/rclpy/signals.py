@@ -27,6 +27,9 @@ _installed = {}          # signal number -> the handler that was there before ou
 
 
 def _in_kernel():
+    import sys
+    if 'IPython' not in sys.modules:      # no kernel without it: do not import it (slow)
+        return False
     try:
         from IPython import get_ipython
     except ImportError:

@@ -17,13 +17,20 @@ DISPLAY/WAYLAND_DISPLAY), CI, or LABKIT_NO_WINDOW=1 -- no browser is started and
 node logs one line (with the page's address, except under LABKIT_NO_WINDOW=1, which
 serves nothing).
 """
-import http.server
 import io
 import json
 import os
 import sys
 import threading
-import webbrowser
+
+
+def __getattr__(name):
+    # webbrowser is imported when a window opens (a terminal starts ~6 ms sooner)
+    if name == "webbrowser":
+        import webbrowser
+        return webbrowser
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
 
 ENABLED = False          # set by the `labkit` terminal command (labkit/cli/main.py)
 _open = []               # windows open in this process
@@ -90,6 +97,7 @@ class BrowserWindow:
         self._version, self._last = 0, object()
         self._closed = False
         window = self
+        import http.server              # only when a window opens (a terminal's start-up)
 
         class Handler(http.server.BaseHTTPRequestHandler):
             def log_message(self, *args):      # the terminal belongs to the node
@@ -142,6 +150,7 @@ class BrowserWindow:
 
     def open_browser(self):
         try:
+            import webbrowser
             return webbrowser.open(self.url, new=1)
         except Exception:       # no browser registered: the address was logged
             return False

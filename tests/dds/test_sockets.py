@@ -10,6 +10,7 @@ import struct
 import subprocess
 import sys
 import textwrap
+import time
 
 from labkit.dds import sockets
 from tests.dds.test_real_peers import REPO, _env, domain, finish, labkit  # noqa: F401
@@ -89,6 +90,23 @@ def _is_loopback(host):
     return host.startswith("127.") or host == "::1" or host.startswith("::ffff:127.")
 
 
+def _joined_sockets(pid, longest=10.0):
+    """The process's sockets, flags and the kernel's view of them, once its DDS join has
+    opened them and bound the wildcard ones to the loopback device (or `longest` passed)."""
+    lo = socket.if_nametoindex("lo")
+    end = time.monotonic() + longest
+    while True:
+        held = {int(ino): fd for fd, ino in sockets.open_sockets(pid).items()}
+        flags = {inode: _fd_flags(pid, fd) for inode, fd in held.items()}
+        kernel = _kernel_inet_sockets()
+        wildcard = [kernel[i] for i in held
+                    if i in kernel and kernel[i][1][0] in ("0.0.0.0", "::")]
+        if (held and len(wildcard) >= 2 and all(k[3] == lo for k in wildcard)) \
+                or time.monotonic() > end:
+            return held, flags, kernel
+        time.sleep(0.05)
+
+
 def test_every_socket_labkit_opens_is_on_loopback(tmp_path, domain):
     """The process's sockets are exactly Cyclone's: UDP only, each bound to a loopback
     address or, for the two unicast receive sockets Cyclone 11.0.1 binds to the wildcard
@@ -109,15 +127,15 @@ def test_every_socket_labkit_opens_is_on_loopback(tmp_path, domain):
         """.replace("DONE", repr(str(tmp_path / "done"))), domain)
         try:
             assert prog.stdout.readline().strip() == "up"
-            held = {int(ino): fd for fd, ino in sockets.open_sockets(prog.pid).items()}
-            flags = {inode: _fd_flags(prog.pid, fd) for inode, fd in held.items()}
-            kernel = _kernel_inet_sockets()
             spdp = None
             while spdp is None and select.select([peer], [], [], 15)[0]:
                 data, sender = peer.recvfrom(1 << 16)
                 locators = _spdp_locators(data)
                 if locators:
                     spdp = locators
+            # labkit exec joins DDS in the background once the first node exists (Humble's
+            # rmw makes the participant with it): look once its sockets are confined
+            held, flags, kernel = _joined_sockets(prog.pid)
         finally:
             (tmp_path / "done").touch()
             finish(prog)
