@@ -4,14 +4,16 @@ Prints, in one run:
   - small std_msgs/String throughput: labkit -> real, real -> labkit, real -> real
     (target: labkit's rows at least real -> real's);
   - ping-pong round trip median: labkit <-> real echo, real <-> real (target <= 1.5x);
-  - a 640x480 bgr8 Image stream at 30 Hz, labkit -> real: frames lost (target 0);
+  - a 640x480 bgr8 Image stream at 30 Hz, labkit -> labkit, labkit -> real, real -> real,
+    real -> labkit in interleaved rounds: median and mean frame delay, frames lost
+    (target: labkit's rows no slower than real -> real in median and mean, none lost);
   - process start to first message across processes (labkit exec talker -> listener,
     and real -> real; target < 2 s).
 
 Every program below is plain rclpy, run with `python -m labkit exec` (which joins DDS)
 or with the reference interpreter ($ROSREF_PYTHON, else .venv-rosref/bin/python).
 
-    python benchmarks/bench_dds.py [--rounds N] [--only image]
+    python benchmarks/bench_dds.py [--rounds N (3)] [--only image]
 """
 import json
 import os
@@ -141,7 +143,9 @@ def image_sink():
             _spin(node, 0.5)
             break
     print(json.dumps({'received': len(set(got)), 'socket_drops': socket_drops(),
-                      'delay_ms': statistics.median(delays) * 1e3 if delays else None}))
+                      'delay_ms': statistics.median(delays) * 1e3 if delays else None,
+                      'mean_ms': statistics.fmean(delays) * 1e3 if delays else None,
+                      'max_ms': max(delays) * 1e3 if delays else None}))
 
 
 def socket_drops():
@@ -251,20 +255,47 @@ def pair(first_side, first_role, second_side, second_role, rate=0):
     return result(a), result(b)
 
 
-def image_rows():
-    print('640x480 bgr8 Image at 30 Hz for 3 s:')
-    for src, dst in (('labkit', 'real'), ('real', 'real'), ('real-udp', 'real-udp'),
-                     ('real', 'labkit'), ('labkit', 'labkit')):
-        try:
-            got, _ = pair(dst, 'image_sink', src, 'image_source')
-        except RuntimeError as e:
-            print(f'  {src:>6} -> {dst:<6} failed: {str(e).splitlines()[0]}')
+IMAGE_ROWS = (('labkit', 'labkit'), ('labkit', 'real'), ('real', 'real'), ('real', 'labkit'),
+              ('real-udp', 'real-udp'))
+
+
+def image_rows(rounds=1):
+    """The 640x480 stream, each row once per round, the rows taking turns (a burst of
+    load elsewhere hits a round, not a row). Per row: the median over rounds of each
+    round's median and mean frame delay (publish to the subscriber's callback), their
+    range, the slowest frame, and the frames lost in each round."""
+    print(f'640x480 bgr8 Image at 30 Hz for 3 s, {rounds} interleaved round(s); '
+          'frame delay publish -> callback, median over rounds (range):')
+    runs = {row: [] for row in IMAGE_ROWS}
+    for _ in range(rounds):
+        for src, dst in IMAGE_ROWS:
+            try:
+                got, _ = pair(dst, 'image_sink', src, 'image_source')
+            except RuntimeError as e:
+                print(f'  {src:>8} -> {dst:<8} failed: {str(e).splitlines()[0]}')
+                continue
+            if got['delay_ms'] is not None:
+                runs[(src, dst)].append(got)
+    for (src, dst), row in runs.items():
+        if not row:
             continue
-        delay = got['delay_ms']
-        print(f'  {src:>8} -> {dst:<8} {got["received"]}/90 frames, '
-              f'{90 - got["received"]} lost, median delay '
-              + (f'{delay:.1f} ms' if delay is not None else '-')
-              + f', datagrams dropped by the reader\'s socket: {got["socket_drops"]}')
+        med = [r['delay_ms'] for r in row]
+        mean = [r['mean_ms'] for r in row]
+        lost = [90 - r['received'] for r in row]
+        drops = [r['socket_drops'] or 0 for r in row]
+        print(f'  {src:>8} -> {dst:<8} median {statistics.median(med):5.1f} ms '
+              f'({min(med):.1f}-{max(med):.1f}), mean {statistics.median(mean):5.1f} ms '
+              f'({min(mean):.1f}-{max(mean):.1f}), slowest frame '
+              f'{max(r["max_ms"] for r in row):.0f} ms, lost {"/".join(map(str, lost))} of 90, '
+              f'reader socket dropped {min(drops)}-{max(drops)}')
+    base = runs.get(('real', 'real'))
+    for src, dst in (('labkit', 'labkit'), ('labkit', 'real')):
+        row = runs.get((src, dst))
+        if base and row:
+            ratio = [statistics.median(r[key] for r in row) / statistics.median(r[key] for r in base)
+                     for key in ('delay_ms', 'mean_ms')]
+            print(f'  ratio {src} -> {dst} / real -> real: median {ratio[0]:.2f}, '
+                  f'mean {ratio[1]:.2f} (target <= 1, none lost)')
 
 
 def main():
@@ -272,9 +303,9 @@ def main():
         print('real rclpy: reference venv not found (make rosref, or set ROSREF_PYTHON)')
         return
     only = sys.argv[sys.argv.index('--only') + 1] if '--only' in sys.argv else None
-    if only == 'image':
-        return image_rows()
     rounds = int(sys.argv[sys.argv.index('--rounds') + 1]) if '--rounds' in sys.argv else 3
+    if only == 'image':
+        return image_rows(rounds)
     print('small messages (std_msgs/String, reliable, keep last 10), received per second, '
           f'{rounds} interleaved rounds (median, min-max):')
     # the rows take turns, so a burst of load elsewhere on the machine hits a round,
@@ -312,7 +343,7 @@ def main():
               f'({ping["answered"]}/300 answered)')
     print(f'  ratio labkit <-> real / real <-> real: '
           f'{rtt[("labkit", "real")] / rtt[("real", "real")]:.2f} (target <= 1.5)')
-    image_rows()
+    image_rows(rounds)
     print('process start to first message delivered (listener already running):')
 
     for talker, listener in (('labkit', 'labkit'), ('labkit', 'real'), ('real', 'real')):

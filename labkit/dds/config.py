@@ -15,6 +15,11 @@ MAX_PARTICIPANT_INDEX = 32
 # Linux's default socket receive buffer (net.core.rmem_default): what a Fast DDS reader
 # (rmw_fastrtps' default) receives into, on the learner's robot as on this machine
 PEER_RECEIVE_BUFFER = 212992
+NACK_DELAY = "5ms"
+# loopback only (see _loopback_bursts): a writer with unacknowledged data heartbeats
+# every 5 ms instead of Cyclone's 100 ms (`minsched` 2 ms: Cyclone's 20 ms floor would
+# undo it), and may follow a retransmit with a heartbeat 1 ms after the last (`min`, 5 ms)
+HEARTBEAT_INTERVAL, HEARTBEAT_MINSCHED, HEARTBEAT_MIN = "5ms", "2ms", "1ms"
 # localhost mode names the loopback by its address, which every OS has (the interface is
 # `lo` on Linux, `lo0` on macOS, and Windows has no such name); on Linux only,
 # sockets.confine also binds Cyclone's wildcard sockets to the device LOOPBACK_DEVICE
@@ -88,6 +93,11 @@ def cyclone_xml(localhost=True):
             # default but waits forever (DDS_INFINITY): 32 MB keeps labkit's KEEP_ALL
             # writes from failing where rmw's would only wait (e.g. on 640x480 frames)
             "<Internal><Watermarks><WhcHigh>32MB</WhcHigh></Watermarks>"
+            # a reader NACKs what a heartbeat says it misses after 5 ms, as a Fast DDS
+            # reader does (its heartbeatResponseDelay), not after Cyclone's 100 ms: a
+            # 640x480 frame missing one datagram stalled the frames queued behind it
+            # for ~200 ms between two labkit processes
+            f"<NackDelay>{NACK_DELAY}</NackDelay>"
             + ("" if localhost is False else _loopback_bursts()) + "</Internal>"
             "<Tracing><Verbosity>none</Verbosity></Tracing></Domain></CycloneDDS>")
 
@@ -100,10 +110,23 @@ def _loopback_bursts():
     buffer has one as large as its own (2 MB here); send at most 2/3 of Linux's default
     buffer at a time, the rest when the reader asks for it (NACKFRAG), as Cyclone does
     for peers that announce a small buffer. MaxInitTransmit 0: a first transmission is
-    bounded like a retransmission. On a LAN the wire paces the sender: defaults there."""
+    bounded like a retransmission. On a LAN the wire paces the sender: defaults there.
+
+    Cyclone 11.0.1 cannot bound bursts per peer: a writer's limit is the smallest receive
+    buffer among its readers, and a Cyclone peer announces the very size Cyclone assumes
+    for a Fast DDS one (its own), so labkit -> labkit frames go in bursts too. Then each
+    frame is repaired NACK by NACK, and a NACKFRAG that arrives before the writer has
+    finished its first burst gets its fragments but no heartbeat after them (Cyclone
+    follows a retransmit with one only for what it has already sent), so the reader waits
+    for the writer's next periodic heartbeat: 100 ms by default (plus a NackDelay when
+    only a final heartbeat came), which the frames queued behind shared (~200 ms stalls).
+    HEARTBEAT_INTERVAL bounds that wait (heartbeats go out only while a reader has not
+    acknowledged everything: none on an idle or fully acknowledged writer)."""
     burst = PEER_RECEIVE_BUFFER * 2 // 3
     return (f"<BurstSize><MaxRexmit>{burst}B</MaxRexmit>"
-            "<MaxInitTransmit>0</MaxInitTransmit></BurstSize>")
+            "<MaxInitTransmit>0</MaxInitTransmit></BurstSize>"
+            f"<HeartbeatInterval min=\"{HEARTBEAT_MIN}\" minsched=\"{HEARTBEAT_MINSCHED}\">"
+            f"{HEARTBEAT_INTERVAL}</HeartbeatInterval>")
 
 
 def with_user_config(xml):
