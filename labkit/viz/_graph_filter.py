@@ -9,7 +9,9 @@ So, as in rqt_graph, an action's `_action/feedback` and `_action/status` topics
 show up unless `actions` folds them into the action. Services and actions
 are labkit additions rqt_graph does not draw: services as client -> service ->
 server, actions as one box (client -> action -> server) or expanded to the
-hidden services and topics rcl_action creates.
+hidden services and topics rcl_action creates. services="request_response" draws
+a service's two messages apart: the request client -> service -> server, and the
+response server -> service -> client (not in the "Nodes only" graph).
 """
 from __future__ import annotations
 
@@ -74,7 +76,7 @@ def namespace_path(name: str, level: int) -> tuple[str, ...]:
 
 @dataclass(frozen=True)
 class ViewOptions:
-    services: bool = False
+    services: bool | str = False       # False | True (two-headed) | "request_response"
     actions: bool | str = False        # False | True (one box) | "expand"
     hide_debug: bool = True
     hide_dead_sinks: bool = True
@@ -87,6 +89,8 @@ class ViewOptions:
     def __post_init__(self):
         if self.actions not in (False, True, "expand"):
             raise ValueError("actions must be False, True or 'expand'")
+        if self.services not in (False, True, "request_response"):
+            raise ValueError("services must be False, True or 'request_response'")
 
 
 @dataclass(frozen=True, order=True)
@@ -107,7 +111,7 @@ class Vertex:
 class Link:
     start: str                     # vertex ids
     end: str
-    kind: str                      # topic | service | action
+    kind: str                      # topic | service | action | request | response
     label: str = ""                # "Nodes only": the topic (service, action) it stands for
 
 
@@ -230,6 +234,12 @@ def build_view(snapshot: GraphSnapshot, options: ViewOptions = ViewOptions()) ->
                     if o.hide_debug and is_debug_service(name, types):
                         continue
                     s = add("service", name, types)
+                    if o.services == "request_response" and not o.nodes_only:
+                        # the request there (client -> service -> server), the response back
+                        there = ("n_" + fqn, s) if role == "client" else (s, "n_" + fqn)
+                        links.add(Link(*there, "request"))
+                        links.add(Link(*reversed(there), "response"))
+                        continue
                     links.add(Link(s, "n_" + fqn, "service") if role == "server"
                               else Link("n_" + fqn, s, "service"))
     elif o.actions == "expand":

@@ -8,6 +8,7 @@ clusters and edges are added in sorted order, so `dot` is deterministic too.
 """
 from __future__ import annotations
 
+import base64
 import contextlib
 import math
 import os
@@ -40,6 +41,9 @@ _EDGE = {
     # request and response (or goal, feedback and result) travel both ways
     "service": dict(stroke="#2f6fa8", dash="5,3", both=True),
     "action": dict(stroke="#b5651d", dash="5,3", both=True),
+    # services="request_response": one arrow per message, each named
+    "request": dict(stroke="#2f6fa8", dash=None, both=False, text="请求"),
+    "response": dict(stroke="#2f6fa8", dash="5,3", both=False, text="应答", back=True),
 }
 _CLUSTER = {"namespace": dict(stroke="#9a9a9a", dash=None),
             "action": dict(stroke="#b5651d", dash="5,3")}
@@ -108,7 +112,7 @@ def to_agraph(view: ViewGraph, *, rankdir: str = "LR"):
     g = pgv.AGraph(directed=True, strict=False, name="rosgraph")   # rqt_graph: no simplify
     # rqt_graph's defaults: left to right, ranksep 0.2, rank=same, no simplify
     # two-headed (service/action) arrows need a longer shaft to stay readable
-    two_way = any(_EDGE[link.kind]["both"] for link in view.links)
+    two_way = any(_EDGE[link.kind]["both"] or "text" in _EDGE[link.kind] for link in view.links)
     g.graph_attr.update(rankdir=rankdir, ranksep="0.5" if two_way else "0.2",
                         nodesep="0.25", rank="same",
                         fontname=FONT_FAMILY, fontsize=str(CLUSTER_FONT_SIZE),
@@ -139,14 +143,21 @@ def to_agraph(view: ViewGraph, *, rankdir: str = "LR"):
     for link in view.links:
         # arrowheads at both ends make dot reserve room for them
         extra = dict(dir="both") if _EDGE[link.kind]["both"] else {}
-        if link.label:
-            extra["label"] = _fixed_label(link.label, EDGE_FONT_SIZE)
-        g.add_edge(link.start, link.end, key=_edge_key(link), **extra)
+        if _EDGE[link.kind].get("back"):
+            extra["dir"] = "back"   # laid out beside the arrow it answers, head at its end
+        if link.label or "text" in _EDGE[link.kind]:
+            extra["label"] = _fixed_label(link.label or _EDGE[link.kind]["text"], EDGE_FONT_SIZE)
+        g.add_edge(*_laid_out_ends(link), key=_edge_key(link), **extra)
     return g
 
 
 def _edge_key(link) -> str:
     return f"{link.start}|{link.label}|{link.end}"
+
+
+def _laid_out_ends(link):
+    """(tail, head) of the edge dot lays out: a response runs against its request."""
+    return (link.end, link.start) if _EDGE[link.kind].get("back") else (link.start, link.end)
 
 
 
@@ -397,13 +408,16 @@ def render_svg(view: ViewGraph, *, rankdir: str = "auto") -> str:
                    f'{_text(lx, ly, label, CLUSTER_FONT_SIZE, "#555555")}</g>')
     by_id = {v.id: v for v in view.vertices}
     for link in view.links:
-        edge = g.get_edge(link.start, link.end, key=_edge_key(link))
+        edge = g.get_edge(*_laid_out_ends(link), key=_edge_key(link))
         title = f"{by_id[link.start].name} \u2192 {by_id[link.end].name}"
         label = ""
         if link.label:
             title = f"{by_id[link.start].name} \u2192 {link.label} \u2192 {by_id[link.end].name}"
+        if link.label or "text" in _EDGE[link.kind]:
             lx, ly = canvas.pt(*_floats(edge.attr["lp"]))
-            label = _text(lx, ly, link.label, EDGE_FONT_SIZE)
+            label = _text(lx, ly, link.label or _EDGE[link.kind]["text"], EDGE_FONT_SIZE)
+        if "text" in _EDGE[link.kind]:
+            title += f" ({_EDGE[link.kind]['text']})"
         out.append(f'<g class="edge {link.kind}"><title>{escape(title)}</title>'
                    f'{_edge_svg(canvas, edge.attr["pos"], _EDGE[link.kind])}{label}</g>')
     for v in view.vertices:
@@ -442,3 +456,16 @@ def fit_svg(svg: str) -> str:
     style = (f' style="display:block;width:100%;max-width:{m.group(1)}pt;height:auto"'
              ' preserveAspectRatio="xMinYMin meet"')
     return element[:m.start()] + style + element[m.end():]
+
+
+def img_html(svg: str, alt: str = "") -> str:
+    """The SVG as an HTML <img> that fits its container: drawn at its own size when
+    there is room, scaled down (aspect kept) when there is not, never scaled up. A
+    notebook output's text/html face: JupyterLab draws an image/svg+xml output as an
+    <img> at the SVG's own size however narrow the cell, but this one as written, after
+    save and reload too (even untrusted: its sanitizer keeps <img> and these styles),
+    and so does the HTML book."""
+    data = base64.b64encode(svg.encode("utf-8")).decode("ascii")
+    return (f'<img class="labkit-graph-snapshot" alt={quoteattr(alt)} '
+            'style="display:block;max-width:100%;height:auto" '
+            f'src="data:image/svg+xml;base64,{data}"/>')

@@ -31,7 +31,7 @@ import weakref
 
 from labkit.viz._graph_filter import ViewGraph, ViewOptions, build_view
 from labkit.viz._graph_model import GraphSnapshot, join_name, query_snapshot
-from labkit.viz._graph_render import fit_svg, render_svg
+from labkit.viz._graph_render import fit_svg, img_html, render_svg
 
 __all__ = ["GraphView", "GraphSnapshot", "concept_figure", "stop_all"]
 
@@ -154,11 +154,12 @@ class GraphView:
     cluster_level ("Group: Namespaces" depth), nodes_only (the "Nodes only"
     graph: arrows from node to node labelled with the topic instead of topic
     boxes; the default is "Nodes/Topics (all)"). labkit adds `services` (client ->
-    service -> server) and `actions` (False, True for one box per action, or
-    "expand" for its hidden services and topics).
+    service -> server, a two-headed arrow; "request_response": the request client ->
+    service -> server and the response back as two arrows, each named) and `actions`
+    (False, True for one box per action, or "expand" for its hidden services and topics).
     """
 
-    def __init__(self, services: bool = False, actions: bool | str = False,
+    def __init__(self, services: bool | str = False, actions: bool | str = False,
                  hide_debug: bool = True, *, hide_dead_sinks: bool = True,
                  hide_leaf_topics: bool = True, hide_tf: bool = False, group_tf: bool = True,
                  cluster_level: int = 2, nodes_only: bool = False, rankdir: str = "auto",
@@ -250,12 +251,14 @@ class GraphView:
         snapshot = self.snapshot()
         svg = self._draw(snapshot)
         text = f"<GraphView: {len(build_view(snapshot, self.options).vertices)} vertices>"
+        # the static face twice: the SVG itself, and an <img> of it that fits the cell
+        static = dict(svg=svg, html=img_html(svg, alt=text), text=text)
         if not follow:
-            show(svg=svg, text=text)
+            show(**static)
             return
         if self._widget is not None and self._widget.value != _html(svg):
             self._widget.value = _html(svg)
-        show(self.widget(), svg=svg, text=text)
+        show(self.widget(), **static)
         if _live_mode() and self._fixed is None:
             self.start()
 

@@ -4,6 +4,7 @@ is asked for (live=True) and scales to its cell's width.
 ch03 showed `GraphView().show()` in §3.3; in live JupyterLab the widget went on
 following the graph, so after the chapter's exercise had started its nodes the
 §3.3 picture showed those nodes, not the ones the text describes."""
+import base64
 import threading
 import xml.etree.ElementTree as ET
 
@@ -102,3 +103,20 @@ def test_fit_svg_scales_down_only():
     style = fitted.get("style")
     assert "width:100%" in style and f"max-width:{natural_w}" in style and "height:auto" in style
     assert fitted.get("viewBox") == root.get("viewBox")
+
+
+def test_snapshot_carries_a_picture_that_fits_its_cell(live_time, shown, nodes):
+    """JupyterLab draws an image/svg+xml output as an <img> at the SVG's own size, cut
+    off in a narrower cell; the output's text/html face (which JupyterLab and the book
+    prefer) is an <img> of the same SVG scaled down to the cell, never up."""
+    _talker_listener(nodes, "text")
+    GraphView().show()
+    (bundle,) = shown
+    img = ET.fromstring(bundle["text/html"])
+    assert img.tag == "img" and img.get("width") is None and img.get("height") is None
+    style = dict(part.split(":") for part in img.get("style").split(";"))
+    assert style["max-width"] == "100%" and style["height"] == "auto"
+    prefix = "data:image/svg+xml;base64,"
+    assert img.get("src").startswith(prefix)
+    assert base64.b64decode(img.get("src")[len(prefix):]).decode("utf-8") == bundle["image/svg+xml"]
+    assert img.get("alt") == bundle["text/plain"]
