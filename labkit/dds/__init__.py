@@ -16,7 +16,14 @@ time (CI, notebook execution) `connect()` refuses with one line, and `labkit exe
 (the test suite sets it so parallel runs never see each other).
 
 connect(domain_id=N) also makes N the process's ROS_DOMAIN_ID (nodes and ros2 verbs
-started afterwards are on it); disconnect() and labkit.reset() put it back.
+started afterwards are on it); disconnect() and labkit.reset() put it back. A domain DDS
+cannot map to ports (233 and above) is refused with Fast DDS's one line (UnmappableDomain;
+a notebook shows that line and no traceback).
+
+`labkit exec` joins as Humble's rmw does: with the program's first node (rclpy.init() alone
+makes no participant), in a background thread while the program goes on
+(join_at_first_node); connect(), disconnect(), settle_discovery() and wait_until() wait for
+a join under way, and a program that ends meanwhile makes no participant.
 
 What it does not do (yet): a real Fast DDS *client* calling a labkit service gets no
 reply (Fast DDS matches replies by the RTPS related-sample-identity, which Cyclone's
