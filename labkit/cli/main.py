@@ -156,7 +156,10 @@ def _stop_everything():
 
 def ros2_main(argv):
     if argv[:1] and argv[0] in _GRAPH_NOUNS:
-        if not _join_dds(settle=argv[0] not in ('run', 'launch')):
+        # a program (run, launch) joins with its first node, like `labkit exec`; a verb
+        # that looks at the graph joins now and lets discovery settle first
+        starts = argv[0] in ('run', 'launch')
+        if not _join_dds(settle=not starts, deferred=starts):
             return 1
     try:
         return _ros2_verb(argv)
