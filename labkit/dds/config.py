@@ -18,7 +18,8 @@ PEER_RECEIVE_BUFFER = 212992
 NACK_DELAY = "5ms"
 # loopback only (see _loopback_bursts): a writer with unacknowledged data heartbeats
 # every 5 ms instead of Cyclone's 100 ms (`minsched` 2 ms: Cyclone's 20 ms floor would
-# undo it), and may follow a retransmit with a heartbeat 1 ms after the last (`min`, 5 ms)
+# undo it), and may send a heartbeat not tied to a write (e.g. after a retransmit) 1 ms
+# after the previous one (`min`; Cyclone's default 5 ms)
 HEARTBEAT_INTERVAL, HEARTBEAT_MINSCHED, HEARTBEAT_MIN = "5ms", "2ms", "1ms"
 # localhost mode names the loopback by its address, which every OS has (the interface is
 # `lo` on Linux, `lo0` on macOS, and Windows has no such name); on Linux only,
