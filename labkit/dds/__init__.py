@@ -85,6 +85,18 @@ class UnmappableDomain(ConfigError):
         return [PORT_TOO_HIGH]
 
 
+def _checked_settings(domain_id, localhost_only):
+    """(domain, localhost) for a join, or the one-line refusal connect() gives: virtual
+    time, a domain DDS cannot map to ports, a bad value."""
+    from labkit.dds import config
+    from labkit.graph import world
+    if world.mode() != "live":
+        raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
+                           "stays in-process (call labkit.set_time_mode('live') first)")
+    _refuse_unmappable(domain_id)
+    return config.domain_id(domain_id), config.localhost_only(localhost_only)
+
+
 def _refuse_unmappable(domain_id):
     """Before labkit's own range check: an integer domain past 232 (given, or from
     ROS_DOMAIN_ID) gets Fast DDS's line, as Humble's rmw refuses its participant."""
@@ -119,15 +131,8 @@ def join_at_first_node(domain_id=None, localhost_only=None):
     The settings are checked now (ConfigError / UnmappableDomain, one line, as connect());
     connect(), disconnect(), settle_discovery() and wait_until() wait for a join under way."""
     global _deferred, _leaving
-    from labkit.dds import config
-    from labkit.graph import world
     from labkit.graph.registry import GRAPH
-    if world.mode() != "live":
-        raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
-                           "stays in-process (call labkit.set_time_mode('live') first)")
-    _refuse_unmappable(domain_id)
-    domain = config.domain_id(domain_id)
-    reach = config.localhost_only(localhost_only)
+    domain, reach = _checked_settings(domain_id, localhost_only)
 
     def first_node():
         global _deferred, _pending
@@ -222,16 +227,9 @@ def connect(domain_id=None, localhost_only=None):
     localhost_only None follows ROS_LOCALHOST_ONLY / ROS_AUTOMATIC_DISCOVERY_RANGE and
     is True unless they open it up; False reaches the LAN (multicast discovery)."""
     global _bridge
-    from labkit.dds import config
-    from labkit.graph import world
     _cancel_deferred()
     _await_pending()
-    if world.mode() != "live":
-        raise ConnectError("labkit.connect(): DDS peers run in wall-clock time; virtual time "
-                           "stays in-process (call labkit.set_time_mode('live') first)")
-    _refuse_unmappable(domain_id)
-    domain = config.domain_id(domain_id)
-    reach = config.localhost_only(localhost_only)
+    domain, reach = _checked_settings(domain_id, localhost_only)
     with _lock:
         if _bridge is not None:
             if _bridge.domain_id == domain and _bridge.localhost == reach:
