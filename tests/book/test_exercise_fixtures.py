@@ -50,22 +50,11 @@ from test_exercises import CHAPTERS, reports
 RUNNER = Path(__file__).resolve().parent / "exercise_fixture_runner.py"
 MIN_VALID = MIN_WRONG = 3
 WORKERS = 2
-# Chapters that join DDS (domains fixed by the exercise): two runs at once on one
-# machine would hear each other (one fixture's /driver or /cmd_vel seen by the other's
-# check). Each of their runs gets a network namespace of its own, loopback only; where
-# that cannot be made, their runs take turns.
-OWN_NETWORK = {"connect_real_ros.ipynb"}
-_NETNS = ["unshare", "-rn", "sh", "-c", 'ip link set lo up && exec "$@"', "sh"]
+# Chapters that join DDS on domains the exercise fixes: two of their runs at once on
+# one machine would hear each other (one fixture's /driver or /cmd_vel seen by the
+# other's check), so their runs take turns (other chapters' runs fill the other worker).
+APART = {"connect_real_ros.ipynb"}
 _turns = threading.Lock()
-
-
-def _own_network() -> list[str] | None:
-    """The command prefix that runs a process in a new network namespace, or None."""
-    try:
-        ok = subprocess.run(_NETNS + ["true"], capture_output=True, timeout=30).returncode == 0
-    except (OSError, subprocess.SubprocessError):
-        ok = False
-    return _NETNS if ok else None
 
 
 # Chapters whose fixtures are still to be written (issue 18). The list may only
@@ -125,10 +114,8 @@ def _run_job(job, scratch):
     env.pop("LABKIT_EXERCISE_LOG", None)
     t0 = time.monotonic()
     cmd = [sys.executable, str(RUNNER), job_path]
-    apart = job["chapter"] in OWN_NETWORK
-    netns = _own_network() if apart else None
-    with (_turns if apart and netns is None else contextlib.nullcontext()):
-        proc = subprocess.run((netns or []) + cmd, env=env, capture_output=True, text=True,
+    with (_turns if job["chapter"] in APART else contextlib.nullcontext()):
+        proc = subprocess.run(cmd, env=env, capture_output=True, text=True,
                               encoding="utf-8", timeout=300)
     try:
         with open(job["results"], encoding="utf-8") as f:
