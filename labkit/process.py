@@ -404,6 +404,16 @@ def _resolve(argv):
     return program, [exe_path] + list(argv[2:])
 
 
+def _import_here():
+    """numpy (through the CDR serializer, which every message copy and bag uses) is
+    imported lazily since labkit exec's start-up work; import it here, in the thread that
+    starts a process, never first inside a process's own thread: under Windows a first
+    import of numpy in a process thread while the notebook kept computing stalled that
+    thread (`ros2 bag record` kept 1 frame of 45; tests/bag/test_lossless.py in the
+    Windows job)."""
+    import labkit.interfaces.cdr  # noqa: F401
+
+
 def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
     """Start a process: `argv` as `ros2 run` gets it (package, executable, args...),
     or `main=` a callable taking args=. Returns once it reached its first wait point."""
@@ -413,6 +423,7 @@ def start(argv=None, name=None, *, main=None, args=None, echo=True, sink=None):
         args = [name or getattr(main, "__name__", "process")]
     if name is None:
         name = argv[1] if argv and len(argv) > 1 else getattr(main, "__name__", "process")
+    _import_here()
     install_output_proxy()
     _install_argv_proxy()
     proc = Process(name, argv=args)
